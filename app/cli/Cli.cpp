@@ -1,0 +1,46 @@
+// The lbdem command line: builds the CLI11 application and maps failures to exit codes.
+#include "app/cli/Cli.h"
+
+#include "app/cli/Commands.h"
+#include "solver/core/InputError.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+namespace lbdem::cli {
+
+int runCli(int argc, char** argv) {
+    CLI::App app{"lbdem — 2D lattice-Boltzmann / discrete-element simulator of submerged "
+                 "granular flows"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "lbdem 0.1.0");
+    int exitCode = kExitOk;
+    addInfoCommand(app, exitCode);
+    addRunCommand(app, exitCode);
+    addVerifyCommand(app, exitCode);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForAllHelp& help) {
+        return app.exit(help);
+    } catch (const CLI::CallForVersion& version) {
+        return app.exit(version);
+    } catch (const CLI::ParseError& error) {
+        std::cerr << "lbdem: " << error.what() << " (see lbdem --help)\n";
+        return kExitBadInput;
+    } catch (const solver::InputError& error) {
+        std::cerr << "lbdem: " << error.what() << "\n";
+        return kExitBadInput;
+    } catch (const solver::SimulationError& error) {
+        std::cerr << "lbdem: the simulation stopped: " << error.what() << "\n";
+        return kExitFailure;
+    } catch (const std::exception& error) {
+        std::cerr << "lbdem: " << error.what() << "\n";
+        return kExitFailure;
+    }
+    return exitCode;
+}
+
+} // namespace lbdem::cli

@@ -1,0 +1,70 @@
+// Plan serialisation.
+#include "solver/io/PlanJson.h"
+
+#include <cstdio>
+
+namespace lbdem::io {
+
+nlohmann::json planToJson(const solver::Plan& plan) {
+    return nlohmann::json{
+        {"has_fluid", plan.has_fluid},
+        {"has_grains", plan.has_grains},
+        {"nx", plan.nx},
+        {"ny", plan.ny},
+        {"h_m", plan.h_m},
+        {"dt_s", plan.dt_s},
+        {"tau", plan.tau},
+        {"nu_lattice", plan.nu_lattice},
+        {"u_expected_m_s", plan.u_expected_m_s},
+        {"mach", plan.mach},
+        {"dem_dt_s", plan.dem_dt_s},
+        {"substeps", plan.substeps},
+        {"grains", plan.grains},
+        {"tc_s", plan.tc_s},
+        {"end_time_s", plan.end_time_s},
+        {"steps", plan.steps},
+        {"memory_bytes", plan.memory_bytes},
+        {"estimated_run_s", plan.estimated_run_s},
+        {"column_width_m", plan.column.width_m},
+        {"column_height_m", plan.column.height_m},
+        {"warnings", plan.warnings},
+    };
+}
+
+std::string formatPlan(const solver::Plan& plan) {
+    std::string text;
+    auto line = [&text](const char* name, const char* pattern, double value, const char* unit) {
+        char buffer[160];
+        char number[64];
+        std::snprintf(number, sizeof number, pattern, value);
+        std::snprintf(buffer, sizeof buffer, "  %-22s %14s  %s\n", name, number, unit);
+        text += buffer;
+    };
+    text += plan.has_fluid ? "Fluid lattice\n" : "Fluid lattice: none (dry scene)\n";
+    if (plan.has_fluid) {
+        line("nodes nx", "%.0f", plan.nx, "");
+        line("nodes ny", "%.0f", plan.ny, "");
+        line("spacing h", "%.4g", plan.h_m, "m");
+        line("time step dt", "%.4g", plan.dt_s, "s");
+        line("relaxation time tau", "%.6g", plan.tau, "");
+        line("lattice viscosity", "%.4g", plan.nu_lattice, "lattice units");
+        line("expected velocity", "%.4g", plan.u_expected_m_s, "m/s");
+        line("expected Mach", "%.4g", plan.mach, "");
+        line("DEM sub-steps", "%.0f", plan.substeps, "per fluid step");
+    }
+    text += "Grains\n";
+    line("grains", "%.0f", static_cast<double>(plan.grains), "discs");
+    line("column width L_i", "%.4g", plan.column.width_m, "m");
+    line("column height H_i", "%.4g", plan.column.height_m, "m");
+    line("DEM time step", "%.4g", plan.dem_dt_s, "s");
+    text += "Run\n";
+    line("tau_c", "%.4g", plan.tc_s, "s");
+    line("end time", "%.4g", plan.end_time_s, "s");
+    line("steps", "%.0f", static_cast<double>(plan.steps), "");
+    line("memory", "%.1f", plan.memory_bytes / 1048576.0, "MiB");
+    line("estimated run time", "%.0f", plan.estimated_run_s, "s");
+    for (const auto& warning : plan.warnings) text += "warning: " + warning + "\n";
+    return text;
+}
+
+} // namespace lbdem::io

@@ -1,0 +1,130 @@
+// Planning: from SI case parameters to lattice units, time steps and a cost estimate.
+#include "solver/scene/Plan.h"
+
+#include "solver/scene/SceneKind.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace lbdem::solver {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSoundSpeed = 0.57735026918962576; // c_s = 1/sqrt(3) in lattice units
+constexpr int kQ = 9;
+// Assumed throughputs for the run-time estimate; `lbdem bench` measures the real ones.
+constexpr double kAssumedLatticeUpdatesPerS = 100e6;
+constexpr double kAssumedParticleStepsPerS = 10e6;
+
+std::string format(const char* pattern, double a, double b = 0) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, pattern, a, b);
+    return buffer;
+}
+
+double discMass(double diameter, double density) { return density * kPi * diameter * diameter / 4; }
+
+void planGrains(const CaseSpec& spec, Plan& plan) {
+    const auto& g = spec.grains;
+    plan.has_grains = g.count > 0;
+    plan.grains = g.count;
+    plan.column = columnGeometry(g);
+    const double lightest = discMass(g.d_min_m, g.density_kg_m3);
+    plan.dem_dt_s = g.dt_safety * contactDuration(g.normal_stiffness_n_m, lightest / 2, g.restitution);
+    if (plan.column.width_m > spec.domain.width_m || plan.column.height_m > spec.domain.height_m)
+        plan.warnings.push_back(format("the column (%.4g m wide, %.4g m high) does not fit the domain",
+                                       plan.column.width_m, plan.column.height_m));
+}
+
+void planFluid(const CaseSpec& spec, Plan& plan) {
+    const auto& f = spec.fluid;
+    plan.has_fluid = true;
+    plan.h_m = spec.grains.d_min_m / f.resolution;
+    plan.nx = static_cast<int>(std::lround(spec.domain.width_m / plan.h_m));
+    plan.ny = static_cast<int>(std::lround(spec.domain.height_m / plan.h_m));
+    const double reducedGravity =
+        spec.domain.gravity_m_s2 * (1.0 - f.density_kg_m3 / spec.grains.density_kg_m3);
+    plan.u_expected_m_s = std::sqrt(std::max(reducedGravity, 0.0) * plan.column.height_m);
+    if (f.tau > 0.5) {
+        plan.tau = f.tau;
+        plan.dt_s = (f.tau - 0.5) * plan.h_m * plan.h_m / (3.0 * f.viscosity_m2_s);
+    } else {
+        const double uLattice = f.target_mach * kSoundSpeed;
+        plan.dt_s = uLattice * plan.h_m / std::max(plan.u_expected_m_s, 1e-12);
+        plan.tau = 0.5 + 3.0 * f.viscosity_m2_s * plan.dt_s / (plan.h_m * plan.h_m);
+    }
+    plan.nu_lattice = (plan.tau - 0.5) / 3.0;
+    plan.mach = plan.u_expected_m_s * plan.dt_s / plan.h_m / kSoundSpeed;
+    plan.substeps = spec.coupling.substeps > 0
+                        ? spec.coupling.substeps
+                        : static_cast<int>(std::floor(plan.dt_s / plan.dem_dt_s)) + 1;
+
+    if (f.tau != 0 && f.tau <= 0.5)
+        plan.warnings.push_back(format("tau = %.6g must exceed 0.5; set fluid.tau above 0.5 or to 0", f.tau));
+    if (plan.tau - 0.5 < 0.01 && f.collision != "mrt_les")
+        plan.warnings.push_back(format("tau - 0.5 = %.3g is below 0.01 without LES: the run is likely "
+                                       "unstable; use collision = \"mrt_les\"",
+                                       plan.tau - 0.5));
+    if (plan.mach > 0.3)
+        plan.warnings.push_back(format("expected Mach number %.3g is above 0.3: compressibility errors "
+                                       "and instability; lower tau or raise resolution",
+                                       plan.mach));
+    const double nodesAcross = spec.coupling.hydro_radius_ratio * f.resolution;
+    if (plan.has_grains && nodesAcross < 5)
+        plan.warnings.push_back(format("only %.3g lattice nodes across the smallest hydrodynamic "
+                                       "diameter (fewer than 5): grain forces will be inaccurate",
+                                       nodesAcross));
+}
+
+} // namespace
+
+double contactDuration(double stiffness, double effectiveMass, double restitution) {
+    // Linear spring-dashpot: ln e = -pi zeta / sqrt(1 - zeta^2), t_c = pi / (omega_0 sqrt(1 - zeta^2)).
+    const double logE = std::log(std::clamp(restitution, 1e-6, 1.0));
+    const double zeta = -logE / std::sqrt(kPi * kPi + logE * logE);
+    const double omega0 = std::sqrt(stiffness / effectiveMass);
+    return kPi / (omega0 * std::sqrt(1.0 - zeta * zeta));
+}
+
+ColumnGeometry columnGeometry(const GrainSpec& grains) {
+    ColumnGeometry column;
+    const double dMin = grains.d_min_m, dMax = grains.d_min_m * grains.size_ratio;
+    // E[d^2] for d uniform in [dMin, dMax].
+    const double meanSquare = grains.size_ratio > 1.0
+                                  ? (dMax * dMax * dMax - dMin * dMin * dMin) / (3.0 * (dMax - dMin))
+                                  : dMin * dMin;
+    column.mean_disc_area_m2 = kPi * meanSquare / 4.0;
+    column.grain_area_m2 = grains.count * column.mean_disc_area_m2;
+    const double area = column.grain_area_m2 / grains.packing;
+    column.width_m = std::sqrt(area / grains.aspect_ratio);
+    column.height_m = grains.aspect_ratio * column.width_m;
+    return column;
+}
+
+Plan makePlan(const CaseSpec& spec) {
+    Plan plan;
+    planGrains(spec, plan);
+    plan.tc_s = std::sqrt(plan.column.height_m / std::max(spec.domain.gravity_m_s2, 1e-12));
+    if (spec.fluid.enabled) {
+        planFluid(spec, plan);
+    } else {
+        plan.dt_s = plan.dem_dt_s;
+        plan.substeps = 1;
+    }
+    plan.end_time_s = spec.run.end_tc * plan.tc_s;
+    plan.steps = static_cast<long long>(std::ceil(plan.end_time_s / plan.dt_s));
+
+    const double nodes = static_cast<double>(plan.nx) * plan.ny;
+    const std::size_t bytesPerValue = spec.fluid.storage == "float" ? 4 : 8;
+    // Two distribution sets, one flag byte and one solid fraction per node; ~256 B per grain.
+    plan.memory_bytes = static_cast<std::size_t>(nodes) * (2 * kQ * bytesPerValue + 1 + 8) +
+                        static_cast<std::size_t>(plan.grains) * 256;
+    const double demSteps = static_cast<double>(plan.steps) * plan.substeps;
+    plan.estimated_run_s = static_cast<double>(plan.steps) * nodes / kAssumedLatticeUpdatesPerS +
+                           demSteps * static_cast<double>(plan.grains) / kAssumedParticleStepsPerS;
+    return plan;
+}
+
+} // namespace lbdem::solver

@@ -1,0 +1,52 @@
+// The plan of a case: lattice and DEM discretisation, stability numbers and cost estimate.
+#pragma once
+
+#include "solver/scene/CaseSpec.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace lbdem::solver {
+
+/// Dimensions of the initial granular column, derived from the grain specification.
+struct ColumnGeometry {
+    double width_m = 0;           ///< L_i
+    double height_m = 0;          ///< H_i = a L_i
+    double mean_disc_area_m2 = 0; ///< expected area of one disc
+    double grain_area_m2 = 0;     ///< total disc area
+};
+
+/// Column size that holds count discs at the target packing and aspect ratio.
+ColumnGeometry columnGeometry(const GrainSpec& grains);
+
+/// Lattice units and numbers that follow from a CaseSpec (DESIGN §4).
+struct Plan {
+    bool has_fluid = false;   ///< false for dry scenes: no lattice is allocated
+    bool has_grains = false;  ///< false for pure fluid scenes
+    int nx = 0, ny = 0;       ///< lattice nodes
+    double h_m = 0;           ///< lattice spacing
+    double dt_s = 0;          ///< fluid time step (or DEM step for dry scenes)
+    double tau = 0;           ///< BGK relaxation time
+    double nu_lattice = 0;    ///< lattice viscosity (tau - 1/2) / 3
+    double u_expected_m_s = 0; ///< the velocity scale the Mach number refers to
+    double mach = 0;          ///< u_expected dt / h / c_s
+    double dem_dt_s = 0;      ///< DEM time step
+    int substeps = 1;         ///< DEM sub-steps per fluid step
+    long long grains = 0;     ///< number of discs
+    double tc_s = 0;          ///< tau_c = sqrt(H_i / g); the time unit of the run
+    double end_time_s = 0;    ///< physical end time
+    long long steps = 0;      ///< fluid (or DEM) steps to the end time
+    std::size_t memory_bytes = 0; ///< estimated solver memory
+    double estimated_run_s = 0;   ///< rough wall time on this class of machine
+    ColumnGeometry column;        ///< the initial column (zero when there are no grains)
+    std::vector<std::string> warnings; ///< sentences about stability or accuracy risks
+};
+
+/// Compute the plan of a validated case.
+Plan makePlan(const CaseSpec& spec);
+
+/// Duration of a binary linear spring-dashpot contact between discs of effective mass m_eff.
+double contactDuration(double stiffness, double effectiveMass, double restitution);
+
+} // namespace lbdem::solver

@@ -1,0 +1,85 @@
+// Planning: the paper's numbers follow from its SI parameters (DESIGN §4, §5b).
+#include "solver/scene/Plan.h"
+
+#include <QtTest>
+#include <cmath>
+
+using namespace lbdem::solver;
+
+class PlanTest : public QObject {
+    Q_OBJECT
+private slots:
+    void paperTimeStepFromTau();
+    void tauFromMach();
+    void dryScenePlansNoLattice();
+    void columnHoldsGrainsAtTargetPacking();
+    void contactDurationUndamped();
+    void warnsWhenTauNearHalfWithoutLes();
+};
+
+void PlanTest::paperTimeStepFromTau() {
+    // Kumar et al.: h = 0.1 mm, tau = 0.506, nu = 1e-6 m^2/s  =>  dt = 2e-5 s, 2000 x 1000 nodes.
+    CaseSpec spec;
+    spec.grains.d_min_m = 1e-3;
+    spec.fluid.resolution = 10;
+    spec.fluid.tau = 0.506;
+    const Plan plan = makePlan(spec);
+    QVERIFY(plan.has_fluid);
+    QCOMPARE(plan.nx, 2000);
+    QCOMPARE(plan.ny, 1000);
+    QVERIFY(std::abs(plan.dt_s - 2e-5) < 1e-12);
+    QVERIFY(std::abs(plan.nu_lattice - 0.002) < 1e-12);
+}
+
+void PlanTest::tauFromMach() {
+    CaseSpec spec;
+    spec.fluid.tau = 0;
+    spec.fluid.target_mach = 0.1;
+    const Plan plan = makePlan(spec);
+    QVERIFY(std::abs(plan.mach - 0.1) < 1e-9);
+    QVERIFY(plan.tau > 0.5);
+    // tau = 1/2 + 3 nu dt / h^2 must hold both ways.
+    QVERIFY(std::abs(plan.tau - (0.5 + 3 * spec.fluid.viscosity_m2_s * plan.dt_s / (plan.h_m * plan.h_m))) < 1e-12);
+}
+
+void PlanTest::dryScenePlansNoLattice() {
+    CaseSpec spec;
+    spec.fluid.enabled = false;
+    const Plan plan = makePlan(spec);
+    QVERIFY(!plan.has_fluid);
+    QCOMPARE(plan.nx, 0);
+    QCOMPARE(plan.substeps, 1);
+    QCOMPARE(plan.dt_s, plan.dem_dt_s);
+    QVERIFY(plan.memory_bytes < 1024 * 1024);
+}
+
+void PlanTest::columnHoldsGrainsAtTargetPacking() {
+    GrainSpec grains;
+    grains.count = 1000;
+    grains.d_min_m = 1e-3;
+    grains.size_ratio = 1.0;
+    grains.packing = 0.8;
+    grains.aspect_ratio = 0.5;
+    const ColumnGeometry column = columnGeometry(grains);
+    const double area = 1000 * M_PI * 1e-6 / 4;
+    QVERIFY(std::abs(column.width_m * column.height_m * 0.8 - area) < 1e-12);
+    QVERIFY(std::abs(column.height_m / column.width_m - 0.5) < 1e-12);
+}
+
+void PlanTest::contactDurationUndamped() {
+    // e = 1: t_c = pi sqrt(m / k), the half period of the undamped oscillator.
+    QVERIFY(std::abs(contactDuration(100.0, 1.0, 1.0) - M_PI / 10.0) < 1e-12);
+    QVERIFY(contactDuration(100.0, 1.0, 0.5) > M_PI / 10.0);
+}
+
+void PlanTest::warnsWhenTauNearHalfWithoutLes() {
+    CaseSpec spec;
+    spec.fluid.tau = 0.506;
+    spec.fluid.collision = "bgk";
+    QVERIFY(!makePlan(spec).warnings.empty());
+    spec.fluid.collision = "mrt_les";
+    for (const auto& warning : makePlan(spec).warnings) QVERIFY(warning.find("LES") == std::string::npos);
+}
+
+QTEST_APPLESS_MAIN(PlanTest)
+#include "PlanTest.moc"
