@@ -1,0 +1,91 @@
+// CSV time series writer and reader.
+#include "solver/io/TimeSeriesWriter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace lbdem::io {
+
+namespace {
+
+const std::vector<std::string> kLeadingColumns{"t_s", "t_over_tc", "step"};
+
+std::vector<std::string> splitLine(const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    std::string cell;
+    while (std::getline(stream, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    return cells;
+}
+
+std::string formatValue(double value) {
+    if (!std::isfinite(value)) return "";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+}
+
+} // namespace
+
+TimeSeriesWriter::TimeSeriesWriter(const std::string& path, bool append) : m_path(path) {
+    if (append) {
+        std::ifstream existing(path);
+        std::string header;
+        if (existing && std::getline(existing, header) && !header.empty()) m_columns = splitLine(header);
+    }
+    m_file.open(path, m_columns.empty() ? std::ios::trunc : std::ios::app);
+    if (!m_file) throw std::runtime_error("cannot write " + path);
+}
+
+void TimeSeriesWriter::append(const std::map<std::string, double>& metrics) {
+    if (m_columns.empty()) {
+        for (const auto& name : kLeadingColumns)
+            if (metrics.count(name)) m_columns.push_back(name);
+        for (const auto& [name, value] : metrics)
+            if (std::find(m_columns.begin(), m_columns.end(), name) == m_columns.end())
+                m_columns.push_back(name);
+        for (std::size_t c = 0; c < m_columns.size(); ++c) m_file << (c ? "," : "") << m_columns[c];
+        m_file << "\n";
+    }
+    for (std::size_t c = 0; c < m_columns.size(); ++c) {
+        const auto found = metrics.find(m_columns[c]);
+        m_file << (c ? "," : "") << (found == metrics.end() ? "" : formatValue(found->second));
+    }
+    m_file << "\n";
+    m_file.flush();
+    if (!m_file) throw std::runtime_error("cannot write " + m_path);
+}
+
+std::vector<double> TimeSeriesTable::column(const std::string& name) const {
+    const auto found = std::find(columns.begin(), columns.end(), name);
+    if (found == columns.end()) return {};
+    const auto index = static_cast<std::size_t>(found - columns.begin());
+    std::vector<double> values;
+    values.reserve(rows.size());
+    for (const auto& row : rows) values.push_back(index < row.size() ? row[index] : std::nan(""));
+    return values;
+}
+
+TimeSeriesTable readTimeSeries(const std::string& path) {
+    std::ifstream file(path);
+    if (!file) throw std::runtime_error("cannot read " + path);
+    TimeSeriesTable table;
+    std::string line;
+    if (!std::getline(file, line)) return table;
+    table.columns = splitLine(line);
+    while (std::getline(file, line)) {
+        if (line.empty()) continue;
+        std::vector<double> row;
+        for (const auto& cell : splitLine(line))
+            row.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(cell));
+        table.rows.push_back(std::move(row));
+    }
+    return table;
+}
+
+} // namespace lbdem::io
