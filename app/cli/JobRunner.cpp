@@ -1,0 +1,75 @@
+// Child processes with posix_spawn, output redirected to a log file per job.
+#include "app/cli/JobRunner.h"
+
+#include <chrono>
+#include <fcntl.h>
+#include <map>
+#include <spawn.h>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace lbdem::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+pid_t spawnJob(const Job& job) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, job.log_path.c_str(),
+                                     O_WRONLY | O_CREAT | O_APPEND, 0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    std::vector<char*> argv;
+    for (const auto& arg : job.argv) argv.push_back(const_cast<char*>(arg.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) throw std::runtime_error("cannot start " + job.argv.front() + " for " + job.label);
+    return pid;
+}
+
+} // namespace
+
+std::vector<JobResult> runJobs(const std::vector<Job>& jobs, int maxParallel,
+                               const std::function<void(const JobResult&, int, int)>& onFinished) {
+    std::vector<JobResult> results(jobs.size());
+    std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
+    std::size_t next = 0;
+    int done = 0;
+    const int total = static_cast<int>(jobs.size());
+    while (next < jobs.size() || !running.empty()) {
+        while (next < jobs.size() && static_cast<int>(running.size()) < std::max(1, maxParallel)) {
+            running[spawnJob(jobs[next])] = {next, Clock::now()};
+            ++next;
+        }
+        int status = 0;
+        const pid_t pid = ::waitpid(-1, &status, 0);
+        if (pid < 0) break;
+        const auto found = running.find(pid);
+        if (found == running.end()) continue;
+        auto& result = results[found->second.first];
+        result.label = jobs[found->second.first].label;
+        result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        result.wall_s = std::chrono::duration<double>(Clock::now() - found->second.second).count();
+        running.erase(found);
+        ++done;
+        if (onFinished) onFinished(result, done, total);
+    }
+    return results;
+}
+
+std::string selfExecutable() {
+    std::string path(4096, '\0');
+    const ssize_t length = ::readlink("/proc/self/exe", path.data(), path.size() - 1);
+    if (length <= 0) throw std::runtime_error("cannot find the lbdem executable (/proc/self/exe)");
+    path.resize(static_cast<std::size_t>(length));
+    return path;
+}
+
+} // namespace lbdem::cli

@@ -1,0 +1,182 @@
+// The run loop of `lbdem run` and `lbdem resume`.
+#include "app/cli/RunDriver.h"
+
+#include "solver/io/CaseWriter.h"
+#include "solver/io/Checkpoint.h"
+#include "solver/io/PlanJson.h"
+#include "solver/io/TimeSeriesWriter.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace lbdem::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kProgressPeriodS = 2.0;
+
+double seconds(Clock::time_point since) {
+    return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+std::string formatDuration(double s) {
+    char buffer[32];
+    if (s >= 3600)
+        std::snprintf(buffer, sizeof buffer, "%dh%02dm", int(s / 3600), int(std::fmod(s, 3600) / 60));
+    else if (s >= 60)
+        std::snprintf(buffer, sizeof buffer, "%dm%02ds", int(s / 60), int(std::fmod(s, 60)));
+    else
+        std::snprintf(buffer, sizeof buffer, "%.0fs", s);
+    return buffer;
+}
+
+/// Keep only the rows of an existing timeseries.csv up to and including step (for a resume
+/// after a kill: rows written after the last checkpoint are computed again).
+void trimTimeSeries(const std::string& path, long long step) {
+    std::ifstream in(path);
+    if (!in) return;
+    std::string header, line, kept;
+    if (!std::getline(in, header)) return;
+    const auto table = io::readTimeSeries(path);
+    const auto steps = table.column("step");
+    kept = header + "\n";
+    for (std::size_t row = 0; std::getline(in, line); ++row)
+        if (row < steps.size() && steps[row] <= step) kept += line + "\n";
+    in.close();
+    io::writeFileAtomically(path, kept);
+}
+
+} // namespace
+
+struct RunDriver::Progress {
+    std::unique_ptr<io::TimeSeriesWriter> series;
+    long long outputIndex = 0;
+    double nextOutputS = 0;
+    double nextCheckpointS = 0;
+    double lastReportWall = -1e9;
+    long long firstStep = 0;
+    double kePeak = 0, tKePeakOverTc = 0;
+    std::map<std::string, double> lastMetrics;
+    Clock::time_point start = Clock::now();
+};
+
+RunDriver::RunDriver(solver::Simulation& simulation, RunDriverOptions options)
+    : m_simulation(simulation), m_options(std::move(options)), m_progress(std::make_unique<Progress>()) {}
+
+RunDriver::~RunDriver() = default;
+
+void RunDriver::addSink(std::unique_ptr<SnapshotSink> sink) { m_sinks.push_back(std::move(sink)); }
+
+void RunDriver::writeOutput() {
+    auto& p = *m_progress;
+    auto metrics = m_simulation.metrics();
+    metrics["t_s"] = m_simulation.time();
+    metrics["t_over_tc"] = m_simulation.timeOverTc();
+    metrics["step"] = static_cast<double>(m_simulation.stepIndex());
+    p.series->append(metrics);
+    if (const auto ke = metrics.find("ke_over_ep0"); ke != metrics.end() && ke->second > p.kePeak) {
+        p.kePeak = ke->second;
+        p.tKePeakOverTc = m_simulation.timeOverTc();
+    }
+    p.lastMetrics = metrics;
+    if (!m_sinks.empty()) {
+        const auto snapshot = m_simulation.snapshot();
+        for (auto& sink : m_sinks) sink->write(*snapshot, p.outputIndex);
+    }
+    ++p.outputIndex;
+}
+
+void RunDriver::writeCheckpoint() {
+    io::CheckpointData data;
+    data.case_toml = io::formatCase(m_simulation.spec());
+    data.state = m_simulation.saveState();
+    io::writeCheckpoint((m_options.dir / "checkpoint.h5").string(), data);
+}
+
+void RunDriver::writeSummary(double wallSeconds) const {
+    const auto& plan = m_simulation.plan();
+    const auto& p = *m_progress;
+    const double steps = static_cast<double>(m_simulation.stepIndex() - p.firstStep);
+    const double nodes = static_cast<double>(plan.nx) * plan.ny;
+    nlohmann::json summary{
+        {"case", m_simulation.spec().name},
+        {"scene", m_simulation.spec().scene},
+        {"plan", {{"h", plan.h_m}, {"dt", plan.dt_s}, {"tau", plan.tau}, {"mach", plan.mach},
+                  {"nx", plan.nx}, {"ny", plan.ny}, {"substeps", plan.substeps}}},
+        {"steps", m_simulation.stepIndex()},
+        {"t_over_tc", m_simulation.timeOverTc()},
+        {"wall_s", wallSeconds},
+        {"mlups", wallSeconds > 0 ? nodes * steps / wallSeconds / 1e6 : 0.0},
+        {"final", p.lastMetrics},
+    };
+    auto final = [&](const char* metric) {
+        const auto found = p.lastMetrics.find(metric);
+        return found == p.lastMetrics.end() ? nlohmann::json(nullptr) : nlohmann::json(found->second);
+    };
+    summary["runout_final"] = final("runout_normalised");
+    summary["packing_final"] = final("packing_fraction");
+    summary["ke_peak"] = p.kePeak;
+    summary["t_ke_peak_over_tc"] = p.tKePeakOverTc;
+    io::writeFileAtomically((m_options.dir / "summary.json").string(), summary.dump(2) + "\n");
+}
+
+void RunDriver::reportProgress(double wallSeconds, bool last) {
+    auto& p = *m_progress;
+    if (m_options.quiet || (!last && wallSeconds - p.lastReportWall < kProgressPeriodS)) return;
+    p.lastReportWall = wallSeconds;
+    const auto& plan = m_simulation.plan();
+    const double steps = static_cast<double>(m_simulation.stepIndex() - p.firstStep);
+    const double rate = wallSeconds > 0 ? steps / wallSeconds : 0;
+    const double mlups = rate * plan.nx * static_cast<double>(plan.ny) / 1e6;
+    const double endTc = m_options.until_tc > 0 ? m_options.until_tc : m_simulation.spec().run.end_tc;
+    const double remainingSteps = (endTc - m_simulation.timeOverTc()) * plan.tc_s / plan.dt_s;
+    std::fprintf(stderr, "\rt/tc %7.3f / %.3g  step %lld  %.0f steps/s  %.1f MLUPS  ETA %s   %s",
+                 m_simulation.timeOverTc(), endTc, m_simulation.stepIndex(), rate, mlups,
+                 formatDuration(rate > 0 ? std::max(0.0, remainingSteps) / rate : 0).c_str(),
+                 last ? "\n" : "");
+    std::fflush(stderr);
+}
+
+void RunDriver::run() {
+    auto& p = *m_progress;
+    const auto& spec = m_simulation.spec();
+    const auto& plan = m_simulation.plan();
+    const double outputInterval = spec.run.output_interval_tc * plan.tc_s;
+    const double checkpointInterval = spec.output.checkpoint_interval_tc * plan.tc_s;
+    const std::string seriesPath = (m_options.dir / "timeseries.csv").string();
+    if (m_options.resumed) trimTimeSeries(seriesPath, m_simulation.stepIndex());
+    p.series = std::make_unique<io::TimeSeriesWriter>(seriesPath, m_options.resumed);
+    p.firstStep = m_simulation.stepIndex();
+    const double now = m_simulation.time();
+    p.outputIndex = static_cast<long long>(std::llround(now / outputInterval));
+    p.nextOutputS = m_options.resumed ? (p.outputIndex + 1) * outputInterval : now;
+    p.nextCheckpointS = checkpointInterval > 0 ? now + checkpointInterval : 1e300;
+    const double endS = (m_options.until_tc > 0 ? m_options.until_tc : spec.run.end_tc) * plan.tc_s;
+    const double halfStep = 0.5 * plan.dt_s;
+
+    p.start = Clock::now();
+    while (true) {
+        if (m_simulation.time() >= p.nextOutputS - halfStep) {
+            writeOutput();
+            p.nextOutputS = p.outputIndex * outputInterval;
+            writeSummary(seconds(p.start));
+        }
+        if (m_simulation.time() >= p.nextCheckpointS - halfStep) {
+            writeCheckpoint();
+            p.nextCheckpointS += checkpointInterval;
+        }
+        if (m_simulation.time() >= endS - halfStep) break;
+        m_simulation.step();
+        reportProgress(seconds(p.start), false);
+    }
+    writeCheckpoint();
+    writeSummary(seconds(p.start));
+    reportProgress(seconds(p.start), true);
+}
+
+} // namespace lbdem::cli

@@ -1,0 +1,55 @@
+// Drives a Simulation to its end: outputs at intervals, checkpoints, progress, summary.
+#pragma once
+
+#include "solver/scene/Simulation.h"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+namespace lbdem::cli {
+
+/// Writes the snapshot series of a run (VTU/VTI/PVD, PNG frames); supplied by the vis layer.
+class SnapshotSink {
+public:
+    virtual ~SnapshotSink() = default;
+    /// Called at every output time with the output's index.
+    virtual void write(const solver::Snapshot& snapshot, long long outputIndex) = 0;
+};
+
+/// How a run is driven.
+struct RunDriverOptions {
+    std::filesystem::path dir;   ///< output folder (exists)
+    bool quiet = false;          ///< no progress lines
+    double until_tc = -1;        ///< stop at this t / tau_c instead of the case's end (if > 0)
+    bool resumed = false;        ///< continuing from DIR/checkpoint.h5: append, do not restart
+};
+
+/// Steps a Simulation and writes timeseries.csv, summary.json, checkpoint.h5 and the snapshot
+/// series into the output folder, so that a run killed at any moment leaves valid files.
+class RunDriver {
+public:
+    RunDriver(solver::Simulation& simulation, RunDriverOptions options);
+    ~RunDriver();
+
+    /// Add a writer of the snapshot series (VTK, PNG); called at every output.
+    void addSink(std::unique_ptr<SnapshotSink> sink);
+
+    /// Run to the end time; returns when finished. Throws SimulationError when unstable (the
+    /// outputs and checkpoint written so far stay valid).
+    void run();
+
+private:
+    struct Progress;
+    void writeOutput();
+    void writeCheckpoint();
+    void writeSummary(double wallSeconds) const;
+    void reportProgress(double wallSeconds, bool last);
+
+    solver::Simulation& m_simulation;
+    RunDriverOptions m_options;
+    std::vector<std::unique_ptr<SnapshotSink>> m_sinks;
+    std::unique_ptr<Progress> m_progress;
+};
+
+} // namespace lbdem::cli

@@ -1,0 +1,76 @@
+// Sweep-file parsing with toml++.
+#include "solver/io/SweepFile.h"
+
+#include "solver/core/InputError.h"
+#include "solver/core/TextDistance.h"
+
+#include <toml++/toml.h>
+
+#include <filesystem>
+
+namespace lbdem::io {
+
+using solver::InputError;
+
+namespace {
+
+const std::vector<std::string> kSweepKeys{"sweep", "name", "cases", "set"};
+
+std::vector<std::string> stringArray(const toml::node& node, const std::string& path,
+                                     const std::string& key) {
+    const auto* array = node.as_array();
+    const int line = static_cast<int>(node.source().begin.line);
+    if (!array) throw InputError(path, line, key, "expected an array of quoted strings");
+    std::vector<std::string> values;
+    for (const auto& item : *array) {
+        const auto value = item.value<std::string>();
+        if (!value) throw InputError(path, line, key, "expected an array of quoted strings");
+        values.push_back(*value);
+    }
+    return values;
+}
+
+} // namespace
+
+SweepSpec loadSweep(const std::string& path) {
+    toml::table root;
+    try {
+        root = toml::parse_file(path);
+    } catch (const toml::parse_error& error) {
+        const int line = static_cast<int>(error.source().begin.line);
+        if (!std::filesystem::exists(path)) throw InputError(path + ": cannot open the sweep file");
+        throw InputError(path, line, "", "is not valid TOML: " + std::string(error.description()));
+    }
+    SweepSpec sweep;
+    sweep.name = std::filesystem::path(path).stem().string();
+    const auto folder = std::filesystem::path(path).parent_path();
+    for (const auto& [key, node] : root) {
+        const std::string name(key.str());
+        const int line = static_cast<int>(key.source().begin.line);
+        if (name == "sweep") {
+            if (node.value<int64_t>() != 1) throw InputError(path, line, name, "expected 1");
+        } else if (name == "name") {
+            const auto value = node.value<std::string>();
+            if (!value) throw InputError(path, line, name, "expected a quoted string");
+            sweep.name = *value;
+        } else if (name == "cases") {
+            for (const auto& file : stringArray(node, path, name)) {
+                const auto resolved = (folder / file).lexically_normal();
+                if (!std::filesystem::exists(resolved))
+                    throw InputError(path, line, name, "case file " + resolved.string() + " does not exist");
+                sweep.cases.push_back(resolved.string());
+            }
+        } else if (name == "set") {
+            sweep.overrides = stringArray(node, path, name);
+        } else {
+            const std::string nearest = solver::nearestWord(name, kSweepKeys);
+            throw InputError(path, line, name,
+                             "unknown key" + (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
+        }
+    }
+    if (!root.contains("sweep")) throw InputError(path, 1, "sweep", "missing; put 'sweep = 1' at the top");
+    if (sweep.cases.empty()) throw InputError(path, 1, "cases", "the sweep lists no case files");
+    return sweep;
+}
+
+} // namespace lbdem::io
