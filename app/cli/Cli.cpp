@@ -19,6 +19,11 @@ int runCli(int argc, char** argv) {
     addInfoCommand(app, exitCode);
     addRunCommand(app, exitCode);
     addVerifyCommand(app, exitCode);
+    addBenchCommand(app, exitCode);
+    addSweepCommand(app, exitCode);
+#ifdef LBDEM_HAS_VIS
+    addRenderCommand(app, exitCode);
+#endif
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& help) {

@@ -1,12 +1,22 @@
-// `lbdem run`: resolve and plan a case, write the resolved case and plan, then run it.
+// `lbdem run` and `lbdem resume`: resolve and plan a case, then drive the Simulation.
 #include "app/cli/CaseOptions.h"
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
+#include "app/cli/RunDriver.h"
+#include "app/cli/RunSinks.h"
+#include "solver/core/InputError.h"
+#include "solver/io/CaseLoader.h"
 #include "solver/io/CaseWriter.h"
+#include "solver/io/Checkpoint.h"
 #include "solver/io/PlanJson.h"
 #include "solver/scene/Plan.h"
+#include "solver/scene/Simulation.h"
 
 #include <CLI/CLI.hpp>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include <filesystem>
 #include <iostream>
@@ -14,43 +24,101 @@
 
 namespace lbdem::cli {
 
+namespace fs = std::filesystem;
+
 namespace {
 
 struct RunOptions {
     CaseOptions caseOptions;
     std::string out;
+    std::string resumeDir;
+    double renderEveryTc = 0;
+    double untilTc = -1;
     bool quiet = false;
 };
+
+void applyThreads(const solver::CaseSpec& spec) {
+#ifdef _OPENMP
+    if (spec.run.threads > 0) omp_set_num_threads(spec.run.threads);
+#else
+    (void)spec;
+#endif
+}
+
+void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions& options, bool resumed) {
+    const auto& spec = simulation.spec();
+    if (spec.output.vtk && !sinksAvailable() && !options.quiet)
+        std::cerr << "warning: this build has no VTK (LBDEM_GUI=OFF): no VTU/VTI files are written\n";
+    RunDriverOptions driverOptions{dir, options.quiet, options.untilTc, resumed};
+    RunDriver driver(simulation, driverOptions);
+    SinkOptions sinkOptions{spec.output.vtk, spec.output.vtk_every, options.renderEveryTc,
+                            spec.run.output_interval_tc, resumed};
+    for (auto& sink : makeRunSinks(dir.string(), sinkOptions)) driver.addSink(std::move(sink));
+    driver.run();
+    if (!options.quiet) std::cout << "outputs in " << dir.string() << "/\n";
+}
 
 void runCase(const RunOptions& options) {
     const solver::CaseSpec spec = options.caseOptions.load();
     const solver::Plan plan = solver::makePlan(spec);
-    const std::filesystem::path dir = options.out.empty() ? "results/" + spec.name : options.out;
+    const fs::path dir = options.out.empty() ? "results/" + spec.name : options.out;
     std::error_code error;
-    std::filesystem::create_directories(dir, error);
-    if (error)
-        throw std::runtime_error("cannot create the output folder " + dir.string() + ": " +
-                                 error.message());
+    fs::create_directories(dir, error);
+    if (error) throw std::runtime_error("cannot create the output folder " + dir.string() + ": " + error.message());
     io::writeCase(spec, (dir / "case.toml").string());
     io::writeFileAtomically((dir / "plan.json").string(), io::planToJson(plan).dump(2) + "\n");
-    if (!options.quiet) {
+    if (!options.quiet)
         for (const auto& warning : plan.warnings) std::cerr << "warning: " << warning << "\n";
-        std::cout << "wrote " << (dir / "case.toml").string() << " and "
-                  << (dir / "plan.json").string() << "\n";
-    }
+    applyThreads(spec);
+    solver::Simulation simulation(spec, plan);
+    drive(simulation, dir, options, false);
+}
+
+void resumeCase(const RunOptions& options) {
+    const fs::path dir = options.resumeDir;
+    const fs::path checkpoint = dir / "checkpoint.h5";
+    if (!fs::exists(checkpoint))
+        throw solver::InputError(checkpoint.string() + ": no checkpoint to resume from (was the run started "
+                                 "with lbdem run --out " + dir.string() + "?)");
+    const io::CheckpointData data = io::readCheckpoint(checkpoint.string());
+    const solver::CaseSpec spec = io::parseCase(data.case_toml, checkpoint.string() + " (case_toml)");
+    const solver::Plan plan = solver::makePlan(spec);
+    applyThreads(spec);
+    solver::Simulation simulation(spec, plan);
+    simulation.restoreState(data.state);
+    if (!options.quiet)
+        std::cout << "resuming " << spec.name << " at t/tc = " << simulation.timeOverTc() << " (step "
+                  << simulation.stepIndex() << ")\n";
+    drive(simulation, dir, options, true);
 }
 
 } // namespace
 
 void addRunCommand(CLI::App& app, int& exitCode) {
     auto options = std::make_shared<RunOptions>();
-    auto* command = app.add_subcommand("run", "Run a case; writes the resolved case, the plan "
-                                              "and the results into an output folder");
+    auto* command = app.add_subcommand("run", "Run a case; writes the resolved case, the plan, "
+                                              "timeseries.csv, summary.json, VTK series and a checkpoint");
     options->caseOptions.addTo(*command);
     command->add_option("--out", options->out, "Output folder (default results/<case name>)");
+    command->add_option("--render-every", options->renderEveryTc,
+                        "Also render a PNG frame every X tau_c into OUT/frames/")
+        ->check(CLI::NonNegativeNumber);
+    command->add_option("--until-tc", options->untilTc, "Stop at this t / tau_c (resume later)");
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
     command->callback([options, &exitCode] {
         runCase(*options);
+        exitCode = kExitOk;
+    });
+
+    auto resumeOptions = std::make_shared<RunOptions>();
+    auto* resume = app.add_subcommand("resume", "Continue a run from DIR/checkpoint.h5, bit for bit");
+    resume->add_option("dir", resumeOptions->resumeDir, "Output folder of the run")->required();
+    resume->add_option("--until-tc", resumeOptions->untilTc, "Stop at this t / tau_c instead of the case's end");
+    resume->add_option("--render-every", resumeOptions->renderEveryTc, "PNG frame every X tau_c")
+        ->check(CLI::NonNegativeNumber);
+    resume->add_flag("--quiet", resumeOptions->quiet, "Print nothing but errors");
+    resume->callback([resumeOptions, &exitCode] {
+        resumeCase(*resumeOptions);
         exitCode = kExitOk;
     });
 }

@@ -98,13 +98,14 @@ void RunDriver::writeCheckpoint() {
     io::writeCheckpoint((m_options.dir / "checkpoint.h5").string(), data);
 }
 
-void RunDriver::writeSummary(double wallSeconds) const {
+void RunDriver::writeSummary(double wallSeconds, bool finished) const {
     const auto& plan = m_simulation.plan();
     const auto& p = *m_progress;
     const double steps = static_cast<double>(m_simulation.stepIndex() - p.firstStep);
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
     nlohmann::json summary{
         {"case", m_simulation.spec().name},
+        {"finished", finished},
         {"scene", m_simulation.spec().scene},
         {"plan", {{"h", plan.h_m}, {"dt", plan.dt_s}, {"tau", plan.tau}, {"mach", plan.mach},
                   {"nx", plan.nx}, {"ny", plan.ny}, {"substeps", plan.substeps}}},
@@ -133,7 +134,7 @@ void RunDriver::reportProgress(double wallSeconds, bool last) {
     const double steps = static_cast<double>(m_simulation.stepIndex() - p.firstStep);
     const double rate = wallSeconds > 0 ? steps / wallSeconds : 0;
     const double mlups = rate * plan.nx * static_cast<double>(plan.ny) / 1e6;
-    const double endTc = m_options.until_tc > 0 ? m_options.until_tc : m_simulation.spec().run.end_tc;
+    const double endTc = m_options.until_tc > 0 ? m_options.until_tc : plan.end_time_s / plan.tc_s;
     const double remainingSteps = (endTc - m_simulation.timeOverTc()) * plan.tc_s / plan.dt_s;
     std::fprintf(stderr, "\rt/tc %7.3f / %.3g  step %lld  %.0f steps/s  %.1f MLUPS  ETA %s   %s",
                  m_simulation.timeOverTc(), endTc, m_simulation.stepIndex(), rate, mlups,
@@ -156,7 +157,7 @@ void RunDriver::run() {
     p.outputIndex = static_cast<long long>(std::llround(now / outputInterval));
     p.nextOutputS = m_options.resumed ? (p.outputIndex + 1) * outputInterval : now;
     p.nextCheckpointS = checkpointInterval > 0 ? now + checkpointInterval : 1e300;
-    const double endS = (m_options.until_tc > 0 ? m_options.until_tc : spec.run.end_tc) * plan.tc_s;
+    const double endS = m_options.until_tc > 0 ? m_options.until_tc * plan.tc_s : plan.end_time_s;
     const double halfStep = 0.5 * plan.dt_s;
 
     p.start = Clock::now();
@@ -164,7 +165,7 @@ void RunDriver::run() {
         if (m_simulation.time() >= p.nextOutputS - halfStep) {
             writeOutput();
             p.nextOutputS = p.outputIndex * outputInterval;
-            writeSummary(seconds(p.start));
+            writeSummary(seconds(p.start), false);
         }
         if (m_simulation.time() >= p.nextCheckpointS - halfStep) {
             writeCheckpoint();
@@ -175,7 +176,7 @@ void RunDriver::run() {
         reportProgress(seconds(p.start), false);
     }
     writeCheckpoint();
-    writeSummary(seconds(p.start));
+    writeSummary(seconds(p.start), m_simulation.finished());
     reportProgress(seconds(p.start), true);
 }
 

@@ -43,7 +43,7 @@ private:
     struct Progress;
     void writeOutput();
     void writeCheckpoint();
-    void writeSummary(double wallSeconds) const;
+    void writeSummary(double wallSeconds, bool finished) const;
     void reportProgress(double wallSeconds, bool last);
 
     solver::Simulation& m_simulation;

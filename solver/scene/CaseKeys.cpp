@@ -66,6 +66,27 @@ void declareFluid(CaseSchema& s) {
                 [](CaseSpec& c) -> std::string& { return c.fluid.storage; });
 }
 
+void declareFlow(CaseSchema& s) {
+    s.addInteger("flow", "nodes", "-", 4, 100000,
+                 "Lattice nodes across the characteristic length (channel width, vortex "
+                 "wavelength, cavity side, cylinder diameter).",
+                 [](CaseSpec& c) -> int& { return c.flow.nodes; });
+    s.addReal("flow", "reynolds", "-", 1e-3, 1e7,
+              "Reynolds number U L / nu of a verification flow (cylinder: U = mean inflow).",
+              [](CaseSpec& c) -> double& { return c.flow.reynolds; });
+    s.addReal("flow", "lattice_velocity", "-", 1e-5, 0.3,
+              "Peak velocity in lattice units (lid, centreline, amplitude, peak inflow); used "
+              "when flow.tau = 0.",
+              [](CaseSpec& c) -> double& { return c.flow.lattice_velocity; });
+    s.addReal("flow", "tau", "-", 0, 5,
+              "Relaxation time of a verification flow; 0 derives it from lattice_velocity and "
+              "reynolds, above 0.5 it is imposed and the velocity follows from reynolds.",
+              [](CaseSpec& c) -> double& { return c.flow.tau; });
+    s.addInteger("flow", "steps", "-", 0, 2000000000,
+                 "Lattice steps to run; 0 uses the scene's default (steady state or decay time).",
+                 [](CaseSpec& c) -> int& { return c.flow.steps; });
+}
+
 void declareGrains(CaseSchema& s) {
     s.addInteger("grains", "count", "-", 0, 1e7, "Number of discs in the column.",
                  [](CaseSpec& c) -> int& { return c.grains.count; });
@@ -147,6 +168,7 @@ void declareCaseKeys(CaseSchema& schema) {
     declareTopLevel(schema);
     declareDomain(schema);
     declareFluid(schema);
+    declareFlow(schema);
     declareGrains(schema);
     declareCoupling(schema);
     declareRun(schema);

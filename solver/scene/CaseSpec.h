@@ -74,6 +74,17 @@ struct OutputSpec {
     double checkpoint_interval_tc = 1.0; ///< time between checkpoints, in tau_c
 };
 
+/// Verification flows (poiseuille, taylor_green, cavity, cylinder), in lattice terms.
+/// The characteristic length L is domain.height_m (channel width, vortex wavelength, cavity
+/// side) or, for the cylinder, its diameter domain.height_m / 4.1 (Schäfer & Turek 1996).
+struct FlowSpec {
+    int nodes = 32;                ///< lattice nodes across L
+    double reynolds = 100.0;       ///< Re = U L / nu (cylinder: U = mean inflow = 2/3 peak)
+    double lattice_velocity = 0.05; ///< peak lattice velocity (lid, centreline, amplitude, inflow)
+    double tau = 0.0;              ///< > 0.5 imposes tau; the velocity then follows from Re
+    int steps = 0;                 ///< lattice steps to run; 0 uses the scene's default
+};
+
 /// A whole case: the scene kind plus its sections.
 struct CaseSpec {
     int schema = 1;                      ///< case-file schema version
@@ -81,6 +92,7 @@ struct CaseSpec {
     std::string scene = "column_collapse"; ///< scene builder to use
     DomainSpec domain;
     FluidSpec fluid;
+    FlowSpec flow;
     GrainSpec grains;
     CouplingSpec coupling;
     RunSpec run;

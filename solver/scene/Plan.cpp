@@ -1,6 +1,8 @@
 // Planning: from SI case parameters to lattice units, time steps and a cost estimate.
 #include "solver/scene/Plan.h"
 
+#include "solver/dem/ContactLaw.h"
+#include "solver/scene/FlowPlan.h"
 #include "solver/scene/SceneKind.h"
 
 #include <algorithm>
@@ -81,11 +83,9 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
 } // namespace
 
 double contactDuration(double stiffness, double effectiveMass, double restitution) {
-    // Linear spring-dashpot: ln e = -pi zeta / sqrt(1 - zeta^2), t_c = pi / (omega_0 sqrt(1 - zeta^2)).
-    const double logE = std::log(std::clamp(restitution, 1e-6, 1.0));
-    const double zeta = -logE / std::sqrt(kPi * kPi + logE * logE);
-    const double omega0 = std::sqrt(stiffness / effectiveMass);
-    return kPi / (omega0 * std::sqrt(1.0 - zeta * zeta));
+    // One definition shared with the DEM contact law, so that the planned step and the
+    // integrator's dashpot follow from the same damping ratio.
+    return dem::contactDuration(stiffness, effectiveMass, restitution);
 }
 
 ColumnGeometry columnGeometry(const GrainSpec& grains) {
@@ -107,14 +107,19 @@ Plan makePlan(const CaseSpec& spec) {
     Plan plan;
     planGrains(spec, plan);
     plan.tc_s = std::sqrt(plan.column.height_m / std::max(spec.domain.gravity_m_s2, 1e-12));
-    if (spec.fluid.enabled) {
+    const bool flow = spec.fluid.enabled && isFlowScene(sceneFromName(spec.scene));
+    if (flow) {
+        planFlow(spec, plan); // sets its own steps and end time (solver/scene/FlowPlan.cpp)
+    } else if (spec.fluid.enabled) {
         planFluid(spec, plan);
     } else {
         plan.dt_s = plan.dem_dt_s;
         plan.substeps = 1;
     }
-    plan.end_time_s = spec.run.end_tc * plan.tc_s;
-    plan.steps = static_cast<long long>(std::ceil(plan.end_time_s / plan.dt_s));
+    if (!flow) {
+        plan.end_time_s = spec.run.end_tc * plan.tc_s;
+        plan.steps = static_cast<long long>(std::ceil(plan.end_time_s / plan.dt_s));
+    }
 
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
     const std::size_t bytesPerValue = spec.fluid.storage == "float" ? 4 : 8;

@@ -1,6 +1,10 @@
 // The registry of verification cases: each module contributes its list here.
 #include "solver/verification/Verification.h"
 
+#include "solver/verification/CouplingVerification.h"
+#include "solver/verification/DemVerification.h"
+#include "solver/verification/FluidVerification.h"
+
 #include <cmath>
 
 namespace lbdem::solver {
@@ -9,7 +13,7 @@ namespace {
 
 /// Functions returning each module's cases; a module adds its provider here.
 using Provider = std::vector<VerificationCase> (*)();
-const Provider kProviders[] = {nullptr};
+const Provider kProviders[] = {fluidVerificationCases, demVerificationCases, couplingVerificationCases};
 
 } // namespace
 

@@ -1,0 +1,83 @@
+// Sweep table (CSV and Markdown) from the runs' summaries.
+#include "app/cli/SweepReport.h"
+
+#include "solver/io/CaseWriter.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+
+namespace lbdem::cli {
+
+namespace {
+
+struct Row {
+    std::string name, packing, slope, medium, status;
+    double runout = 0, kePeak = 0, tKePeak = 0, packingFinal = 0, wall = 0, mlups = 0;
+};
+
+std::string number(double value, const char* pattern = "%.4g") {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, pattern, value);
+    return buffer;
+}
+
+double numberOr(const nlohmann::json& json, const char* key) {
+    const auto found = json.find(key);
+    return found != json.end() && found->is_number() ? found->get<double>() : 0.0;
+}
+
+Row readRow(const SweepEntry& entry) {
+    Row row;
+    row.name = entry.spec.name;
+    row.packing = number(entry.spec.grains.packing, "%.2f");
+    row.slope = number(entry.spec.domain.slope_deg, "%.1f");
+    row.medium = entry.spec.fluid.enabled ? "submerged" : "dry";
+    std::ifstream file(entry.dir / "summary.json");
+    if (!file) {
+        row.status = "missing";
+        return row;
+    }
+    try {
+        const auto summary = nlohmann::json::parse(file);
+        row.status = summary.value("finished", false) ? "finished" : "unfinished";
+        row.runout = numberOr(summary, "runout_final");
+        row.kePeak = numberOr(summary, "ke_peak");
+        row.tKePeak = numberOr(summary, "t_ke_peak_over_tc");
+        row.packingFinal = numberOr(summary, "packing_final");
+        row.wall = numberOr(summary, "wall_s");
+        row.mlups = numberOr(summary, "mlups");
+    } catch (const nlohmann::json::exception&) {
+        row.status = "unreadable";
+    }
+    return row;
+}
+
+} // namespace
+
+std::vector<std::string> writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
+                                          const std::filesystem::path& out) {
+    std::vector<Row> rows;
+    for (const auto& entry : entries) rows.push_back(readRow(entry));
+    std::string csv = "case,packing,slope_deg,medium,status,runout_final,ke_peak,t_ke_peak_over_tc,"
+                      "packing_final,wall_s,mlups\n";
+    std::string md = "# Sweep " + name + "\n\n| case | packing | slope (deg) | medium | status | "
+                     "(L_f - L_i)/L_i | peak E_k/E_p0 | t_peak/tau_c | final packing | wall (s) | MLUPS |\n"
+                     "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& r : rows) {
+        csv += r.name + "," + r.packing + "," + r.slope + "," + r.medium + "," + r.status + "," +
+               number(r.runout, "%.6g") + "," + number(r.kePeak, "%.6g") + "," + number(r.tKePeak, "%.6g") +
+               "," + number(r.packingFinal, "%.6g") + "," + number(r.wall, "%.1f") + "," +
+               number(r.mlups, "%.1f") + "\n";
+        md += "| " + r.name + " | " + r.packing + " | " + r.slope + " | " + r.medium + " | " + r.status +
+              " | " + number(r.runout, "%.3f") + " | " + number(r.kePeak, "%.4f") + " | " +
+              number(r.tKePeak, "%.2f") + " | " + number(r.packingFinal, "%.3f") + " | " +
+              number(r.wall, "%.0f") + " | " + number(r.mlups, "%.0f") + " |\n";
+    }
+    io::writeFileAtomically((out / "sweep.csv").string(), csv);
+    io::writeFileAtomically((out / "sweep.md").string(), md);
+    return {(out / "sweep.csv").string(), (out / "sweep.md").string()};
+}
+
+} // namespace lbdem::cli

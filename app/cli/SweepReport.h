@@ -1,0 +1,23 @@
+// The combined table and figures of a sweep.
+#pragma once
+
+#include "solver/scene/CaseSpec.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lbdem::cli {
+
+/// One case of a sweep and its output folder.
+struct SweepEntry {
+    solver::CaseSpec spec;
+    std::filesystem::path dir;
+};
+
+/// Write OUT/sweep.csv, OUT/sweep.md and (when built with VTK) the paper's figures as PNG, from
+/// each case's summary.json and timeseries.csv; returns the paths written.
+std::vector<std::string> writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
+                                          const std::filesystem::path& out);
+
+} // namespace lbdem::cli

@@ -1,0 +1,134 @@
+// Coupling set-up, unit conversion and the hand-over of hydrodynamic loads to the DEM.
+#include "solver/coupling/Coupling.h"
+
+#include "solver/core/InputError.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lbdem::solver::coupling {
+
+CouplingMethod couplingMethodFromName(const std::string& name) {
+    if (name == "bounce_back") return CouplingMethod::BounceBack;
+    if (name == "psm") return CouplingMethod::Psm;
+    throw std::invalid_argument("unknown coupling method '" + name + "'");
+}
+
+const char* couplingMethodName(CouplingMethod method) {
+    return method == CouplingMethod::BounceBack ? "bounce_back" : "psm";
+}
+
+PsmWeight psmWeightFromName(const std::string& name) {
+    if (name == "eps") return PsmWeight::Eps;
+    if (name == "nt") return PsmWeight::Nt;
+    throw std::invalid_argument("unknown psm weight '" + name + "'");
+}
+
+Coupling::Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const CouplingParams& params)
+    : m_lattice(lattice), m_dem(dem), m_params(params) {
+    if (!(params.h > 0) || !(params.dt > 0) || !(params.rho_f > 0))
+        throw InputError("the coupling needs positive h, dt and fluid density");
+    if (!(params.hydro_radius_ratio > 0) || params.hydro_radius_ratio > 1)
+        throw InputError("the hydrodynamic radius ratio must lie in (0, 1]");
+    const auto& setup = lattice.setup();
+    m_periodicX = setup.left.type == lattice::SideType::Periodic;
+    m_periodicY = setup.bottom.type == lattice::SideType::Periodic;
+    m_originX = lattice.nodeX(0);
+    m_originY = lattice.nodeY(0);
+    const auto cells = static_cast<std::size_t>(lattice.cells());
+    m_owner.assign(cells, -1);
+    m_solid.assign(cells, 0.0);
+    resizeGrains();
+}
+
+void Coupling::resizeGrains() {
+    const std::size_t n = m_dem.particles().size();
+    if (m_loadX.size() == n) return;
+    m_loadX.assign(n, 0.0);
+    m_loadY.assign(n, 0.0);
+    m_loadT.assign(n, 0.0);
+}
+
+void Coupling::mapGrains() {
+    resizeGrains();
+    std::fill(m_loadX.begin(), m_loadX.end(), 0.0);
+    std::fill(m_loadY.begin(), m_loadY.end(), 0.0);
+    std::fill(m_loadT.begin(), m_loadT.end(), 0.0);
+    if (m_params.method == CouplingMethod::BounceBack) mapBounceBack();
+    else mapPsm();
+}
+
+void Coupling::collectForces() {
+    if (m_params.method == CouplingMethod::Psm) collidePsm();
+    auto& g = m_dem.particles();
+    const std::size_t n = std::min(g.size(), m_loadX.size());
+    const Real fu = forceUnit(), tu = torqueUnit();
+    for (std::size_t i = 0; i < n; ++i) {
+        // The DEM's stored totals include the previous external load; shift them by the change
+        // so the first half-kick of the next sub-step already sees the new hydrodynamic load.
+        const Real fx = m_loadX[i] * fu, fy = m_loadY[i] * fu, t = m_loadT[i] * tu;
+        g.fx[i] += fx - g.ext_fx[i];
+        g.fy[i] += fy - g.ext_fy[i];
+        g.torque[i] += t - g.ext_torque[i];
+        g.ext_fx[i] = fx;
+        g.ext_fy[i] = fy;
+        g.ext_torque[i] = t;
+    }
+}
+
+GrainLoad Coupling::latticeLoad(std::size_t i) const {
+    if (i >= m_loadX.size()) return {};
+    return {m_loadX[i], m_loadY[i], m_loadT[i]};
+}
+
+GrainLoad Coupling::load(std::size_t i) const {
+    const GrainLoad l = latticeLoad(i);
+    return {l.fx * forceUnit(), l.fy * forceUnit(), l.torque * torqueUnit()};
+}
+
+std::size_t Coupling::boundaryCount() const {
+    return m_params.method == CouplingMethod::BounceBack ? m_links.size() : m_psm.size();
+}
+
+CouplingState Coupling::state() const {
+    CouplingState state;
+    state.initialised = m_initialised;
+    for (const Cover& c : m_cover) {
+        state.cells.push_back(c.cell);
+        state.grains.push_back(c.grain);
+    }
+    return state;
+}
+
+void Coupling::restore(const CouplingState& state) {
+    if (state.cells.size() != state.grains.size())
+        throw InputError("coupling state: cell and grain lists differ in length");
+    for (const Cover& c : m_cover) {
+        m_owner[c.cell] = -1;
+        m_solid[c.cell] = 0;
+    }
+    m_cover.clear();
+    m_initialised = state.initialised;
+    const int nx = m_lattice.nx();
+    for (std::size_t k = 0; k < state.cells.size(); ++k) {
+        const long long c = state.cells[k];
+        if (c < 0 || c >= m_lattice.cells()) throw InputError("coupling state does not match the lattice");
+        // Wrapped indices serve as unwrapped ones: they are only used to find neighbours.
+        m_cover.push_back({c, state.grains[k], static_cast<int>(c % nx), static_cast<int>(c / nx)});
+        m_owner[c] = state.grains[k];
+        m_solid[c] = 1;
+    }
+}
+
+void Coupling::renumberGrains(const std::vector<std::int32_t>& newToOld) {
+    std::vector<std::int32_t> oldToNew(newToOld.size(), -1);
+    for (std::size_t k = 0; k < newToOld.size(); ++k) oldToNew[newToOld[k]] = static_cast<std::int32_t>(k);
+    for (Cover& c : m_cover) {
+        c.grain = oldToNew[c.grain];
+        m_owner[c.cell] = c.grain;
+    }
+    resizeGrains();
+}
+
+} // namespace lbdem::solver::coupling

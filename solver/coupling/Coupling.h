@@ -1,0 +1,176 @@
+// Resolved fluid-grain coupling: moving bounce-back or partially saturated cells, with unit conversion.
+#pragma once
+
+#include "solver/core/Real.h"
+#include "solver/dem/DemSystem.h"
+#include "solver/lattice/Lattice.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lbdem::solver::coupling {
+
+/// How the fluid sees the grains (DESIGN §5 Coupling).
+enum class CouplingMethod {
+    BounceBack, ///< moving solid nodes, Bouzidi moving-wall links, momentum exchange (default)
+    Psm,        ///< partially saturated cells (Noble & Torczynski 1998)
+};
+
+/// Weight B(eps) of the partially saturated method.
+enum class PsmWeight {
+    Eps, ///< B = eps
+    Nt,  ///< B = eps (tau - 1/2) / ((1 - eps) + (tau - 1/2)); goes to 0 as tau -> 1/2
+};
+
+/// Parse "bounce_back" / "psm" (case-file words); throws std::invalid_argument otherwise.
+CouplingMethod couplingMethodFromName(const std::string& name);
+/// The case-file word of a method.
+const char* couplingMethodName(CouplingMethod method);
+/// Parse "eps" / "nt"; throws std::invalid_argument otherwise.
+PsmWeight psmWeightFromName(const std::string& name);
+
+/// Parameters of the coupling. The lattice works in lattice units (h = dt = rho_f = 1); the DEM
+/// in SI per unit thickness. Lattice position x_lat = (x - origin_x) / h, i.e. the lattice's
+/// domain edge (nodeX = 0) sits at origin_x [m].
+struct CouplingParams {
+    CouplingMethod method = CouplingMethod::BounceBack;
+    Real hydro_radius_ratio = 0.9; ///< r_h / R seen by the fluid (contacts keep R)
+    PsmWeight psm_weight = PsmWeight::Nt;
+    Real h = 1;                    ///< lattice spacing [m]
+    Real dt = 1;                   ///< fluid time step [s]
+    Real rho_f = 1;                ///< fluid density [kg/m^3]
+    Real origin_x = 0, origin_y = 0; ///< SI position of the lattice's domain corner [m]
+};
+
+/// Hydrodynamic force and torque on one grain.
+struct GrainLoad {
+    Real fx = 0, fy = 0, torque = 0;
+};
+
+/// Restart state: the nodes covered at the last mapGrains, in order, with their grains, and
+/// whether covering momentum is being tracked yet (bounce-back; PSM keeps no state).
+struct CouplingState {
+    std::vector<long long> cells;
+    std::vector<std::int32_t> grains;
+    bool initialised = false;
+};
+
+/// Couples a Lattice and a DemSystem. Per fluid step, in this order:
+///   coupling.mapGrains();      // grain positions at t -> solid nodes / links or solid fractions
+///   lattice.step();
+///   coupling.collectForces();  // PSM collision of covered cells; ext loads into the DEM
+///   dem.advance(dt, n_s);      // loads held fixed over the n_s sub-steps
+/// Hydrodynamic loads: F [N/m] = F_lat rho_f h^3 / dt^2 (a node is a prism of area h^2 and unit
+/// thickness, holding rho_f h^2 kg per metre), torque [N m / m] = T_lat rho_f h^4 / dt^2.
+/// Gravity acts on the grains only (set the buoyancy-reduced value on the DemSystem), so the
+/// lattice pressure is the excess pore pressure. Both objects must outlive the coupling.
+class Coupling {
+public:
+    /// Couple the lattice and the grains; allocates the per-cell arrays once.
+    Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const CouplingParams& params);
+
+    /// Map the grains (current DEM positions) onto the lattice. Bounce-back: refill uncovered
+    /// nodes, make covered nodes solid, write the moving-wall links and sum the exchanged
+    /// momentum. PSM: solid fraction and weight of every cell a grain overlaps.
+    void mapGrains();
+    /// Finish the fluid step: PSM collision of the partly solid cells and their loads; then write
+    /// the SI loads into the particles' ext_fx, ext_fy, ext_torque (and shift fx, fy, torque by
+    /// the change so the next DEM step starts from consistent totals).
+    void collectForces();
+
+    /// Hydrodynamic load on grain i of the last step [N/m, N m/m].
+    GrainLoad load(std::size_t i) const;
+    /// Hydrodynamic load on grain i of the last step, lattice units.
+    GrainLoad latticeLoad(std::size_t i) const;
+    /// Solid fraction per lattice cell (index lattice.index(i, j)): 0/1 for bounce-back, eps for PSM.
+    const std::vector<Real>& solidFraction() const { return m_solid; }
+    /// Grain covering each cell at the last mapGrains (-1: none); bounce-back only.
+    const std::vector<std::int32_t>& owners() const { return m_owner; }
+    /// Number of bounce-back links or PSM cell entries of the last mapGrains.
+    std::size_t boundaryCount() const;
+    /// The parameters the coupling was built with.
+    const CouplingParams& params() const { return m_params; }
+    /// Lattice force unit rho_f h^3 / dt^2 [N/m per lattice unit].
+    Real forceUnit() const { return m_params.rho_f * m_params.h * m_params.h * m_params.h / (m_params.dt * m_params.dt); }
+    /// Lattice torque unit rho_f h^4 / dt^2 [N per lattice unit].
+    Real torqueUnit() const { return forceUnit() * m_params.h; }
+
+    /// Restart state (plain data for the checkpoint writer).
+    CouplingState state() const;
+    /// Restore the state written by state() (same lattice and grain count).
+    void restore(const CouplingState& state);
+    /// Follow dem.sortSpatially(): newToOld[k] is the old index of the grain now at k.
+    void renumberGrains(const std::vector<std::int32_t>& newToOld);
+
+private:
+    /// Loops over fewer items than this run on one thread: a parallel region costs more than
+    /// a few thousand nodes of work (and much more when cores are oversubscribed).
+    static constexpr long long kParallelMin = 4096;
+
+    struct Cover { long long cell; std::int32_t grain; int iu, ju; };       // covered node, unwrapped
+    struct Link { long long fluid, solid; std::int32_t grain; int dir; Real q; long long behind; Real rx, ry; };
+    struct PsmEntry { long long cell; std::int32_t grain; Real eps, rx, ry; };
+
+    long long wrapCell(int iu, int ju) const;
+    void grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) const;
+    void surfaceVelocity(std::size_t p, Real rx, Real ry, Real& ux, Real& uy) const;
+    void resizeGrains();
+    void mapBounceBack();
+    void coverNodes();
+    void refillUncovered();
+    int linksOf(const Cover& covered, Link* out) const;
+    void buildLinks();
+    void applyLinks();
+    void mapPsm();
+    void collidePsm();
+
+    lattice::Lattice& m_lattice;
+    dem::DemSystem& m_dem;
+    CouplingParams m_params;
+    bool m_periodicX = false, m_periodicY = false;
+    Real m_originX = 0, m_originY = 0; // lattice coordinate of node (0, 0)
+    bool m_initialised = false;
+
+    std::vector<std::int32_t> m_owner;  // per cell: grain covering it, -1 none, -2 just uncovered
+    std::vector<Real> m_solid;          // per cell: solid fraction (snapshot)
+    std::vector<Cover> m_cover, m_oldCover;
+    std::vector<Link> m_links;
+    std::vector<long long> m_linkStart; // per covered node: first link (prefix sums)
+    std::vector<Real> m_linkLoad;       // per link (or PSM entry): momentum and torque exchanged
+    std::vector<PsmEntry> m_psm;
+    std::vector<long long> m_psmCells;  // cells touched by the last PSM mapping
+    std::vector<Real> m_loadX, m_loadY, m_loadT; // lattice units, per grain
+};
+
+// Inline helpers of the per-node loops (they run once per covered node or link).
+
+inline long long Coupling::wrapCell(int iu, int ju) const {
+    const int nx = m_lattice.nx(), ny = m_lattice.ny();
+    if (iu < 0 || iu >= nx) {
+        if (!m_periodicX) return -1;
+        iu = ((iu % nx) + nx) % nx;
+    }
+    if (ju < 0 || ju >= ny) {
+        if (!m_periodicY) return -1;
+        ju = ((ju % ny) + ny) % ny;
+    }
+    return m_lattice.index(iu, ju);
+}
+
+inline void Coupling::grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) const {
+    const auto& g = m_dem.particles();
+    cx = (g.x[p] - m_params.origin_x) / m_params.h;
+    cy = (g.y[p] - m_params.origin_y) / m_params.h;
+    r = m_params.hydro_radius_ratio * g.radius[p] / m_params.h;
+}
+
+inline void Coupling::surfaceVelocity(std::size_t p, Real rx, Real ry, Real& ux, Real& uy) const {
+    // u_p + omega x r in lattice units (u dt / h, omega dt); (rx, ry) from the centre, lattice units.
+    const auto& g = m_dem.particles();
+    const Real scale = m_params.dt / m_params.h, w = g.omega[p] * m_params.dt;
+    ux = g.vx[p] * scale - w * ry;
+    uy = g.vy[p] * scale + w * rx;
+}
+
+} // namespace lbdem::solver::coupling

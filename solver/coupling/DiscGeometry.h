@@ -1,0 +1,31 @@
+// Disc geometry on the lattice: exact disc-square overlap areas and link-wall crossing fractions.
+#pragma once
+
+#include "solver/core/Real.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lbdem::solver::coupling {
+
+/// Exact area of the disc (centre cx, cy, radius r) inside the rectangle [x0, x1] x [y0, y1],
+/// by integrating the chord height piecewise between the points where the circle crosses the
+/// rectangle's horizontal edges (each piece has a closed-form antiderivative).
+Real discRectangleOverlap(Real cx, Real cy, Real r, Real x0, Real y0, Real x1, Real y1);
+
+/// Solid fraction of the unit lattice cell centred at (px, py): overlap area with the disc.
+/// Cells wholly inside or outside (farthest / nearest point tested) skip the integration.
+inline Real cellSolidFraction(Real cx, Real cy, Real r, Real px, Real py) {
+    const Real dx = std::abs(px - cx), dy = std::abs(py - cy);
+    const Real fx = dx + Real(0.5), fy = dy + Real(0.5);
+    if (fx * fx + fy * fy <= r * r) return 1;
+    const Real nx = std::max(dx - Real(0.5), Real(0)), ny = std::max(dy - Real(0.5), Real(0));
+    if (nx * nx + ny * ny >= r * r) return 0;
+    return discRectangleOverlap(cx, cy, r, px - Real(0.5), py - Real(0.5), px + Real(0.5), py + Real(0.5));
+}
+
+/// Fraction q in [0, 1] of the link from (px, py) along (ex, ey) where it enters the circle of
+/// radius r centred at the origin-relative offset: (px, py) is measured from the disc centre.
+Real linkWallFraction(Real px, Real py, int ex, int ey, Real r);
+
+} // namespace lbdem::solver::coupling

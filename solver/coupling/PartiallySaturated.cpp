@@ -1,0 +1,178 @@
+// Partially saturated cells (Noble & Torczynski 1998): solid fractions, weighted solid collision, loads.
+#include "solver/coupling/Coupling.h"
+
+#include "solver/coupling/DiscGeometry.h"
+#include "solver/lattice/Collision.h"
+#include "solver/lattice/D2Q9.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lbdem::solver::coupling {
+
+using lattice::equilibrium;
+using lattice::kCx;
+using lattice::kCy;
+using lattice::kOpposite;
+using lattice::kQ;
+
+void Coupling::mapPsm() {
+    // eps of a cell = exact area of the unit cell covered by the disc of radius r_h. A cell two
+    // grains overlap keeps one entry per grain; its total fraction is clipped at 1.
+    for (long long c : m_psmCells) m_solid[c] = 0;
+    m_psmCells.clear();
+    m_psm.clear();
+    const std::size_t n = m_dem.particles().size();
+    for (std::size_t p = 0; p < n; ++p) {
+        Real cx, cy, r;
+        grainGeometry(p, cx, cy, r);
+        const int i0 = static_cast<int>(std::ceil(cx - r - m_originX - 0.5));
+        const int i1 = static_cast<int>(std::floor(cx + r - m_originX + 0.5));
+        const int j0 = static_cast<int>(std::ceil(cy - r - m_originY - 0.5));
+        const int j1 = static_cast<int>(std::floor(cy + r - m_originY + 0.5));
+        for (int ju = j0; ju <= j1; ++ju)
+            for (int iu = i0; iu <= i1; ++iu) {
+                const Real px = iu + m_originX, py = ju + m_originY;
+                const Real eps = cellSolidFraction(cx, cy, r, px, py);
+                if (eps <= 0) continue;
+                const long long c = wrapCell(iu, ju);
+                if (c < 0 || !m_lattice.isFluid(c)) continue;
+                if (m_solid[c] == 0) m_psmCells.push_back(c);
+                m_solid[c] += eps;
+                m_psm.push_back({c, static_cast<std::int32_t>(p), eps, px - cx, py - cy});
+            }
+    }
+    // Entries of one cell next to each other (in-place sort: no allocation in steady state).
+    std::sort(m_psm.begin(), m_psm.end(), [](const PsmEntry& a, const PsmEntry& b) {
+        return a.cell != b.cell ? a.cell < b.cell : a.grain < b.grain;
+    });
+}
+
+namespace {
+
+/// Everything the solid collision of one cell needs besides the cell's entries.
+struct PsmContext {
+    const Real* prev;  // populations the bulk kernel pulled from
+    Real* next;        // post-collision populations written by the bulk kernel
+    long long cells;
+    int nx, ny;
+    Real fx, fy;       // lattice body force (Guo), part of the fluid velocity
+    Real tauMinusHalf;
+    bool ntWeight;
+    bool zouHeLeft, zouHeRight;
+};
+
+/// B(eps): eps, or eps (tau - 1/2) / ((1 - eps) + (tau - 1/2)) (Noble & Torczynski 1998).
+inline Real psmWeight(const PsmContext& ctx, Real eps) {
+    if (!ctx.ntWeight) return eps;
+    return eps * ctx.tauMinusHalf / ((1 - eps) + ctx.tauMinusHalf);
+}
+
+} // namespace
+
+/// The solid collision of one cell with its entries [first, last), the same fluid collision
+/// operator as the bulk kernel, and the loads on the grains. Post-condition:
+///   f_i <- f_i + (1 - B) Omega^f_i(f) + sum_p B_p Omega^s_i(u_p),
+///   Omega^s_i = [f_-i - f_-i^eq(rho, u)] - [f_i - f_i^eq(rho, u_p)]   (NT 1998),
+///   B = B(eps_total), B_p = B eps_p / sum eps, load on p: -B_p sum_i Omega^s_i c_i.
+template <class C, class Entry, class Surface, class Load>
+static void psmCell(const PsmContext& ctx, const C& collide, const Entry* first, const Entry* last,
+                    const Surface& surface, const Load& addLoad) {
+    const long long cell = first->cell;
+    const int x = static_cast<int>(cell % ctx.nx), y = static_cast<int>(cell / ctx.nx);
+    if ((ctx.zouHeLeft && x == 0) || (ctx.zouHeRight && x == ctx.nx - 1)) {
+        for (const Entry* e = first; e != last; ++e) addLoad(e, 0, 0, 0); // Zou-He nodes stay fluid
+        return;
+    }
+    Real f[kQ];
+    for (int q = 0; q < kQ; ++q) {
+        const long long src = static_cast<long long>((y - kCy[q] + ctx.ny) % ctx.ny) * ctx.nx +
+                              (x - kCx[q] + ctx.nx) % ctx.nx;
+        f[q] = ctx.prev[q * ctx.cells + src];
+    }
+    Real rho = 0, jx = 0, jy = 0, sumEps = 0;
+    for (int q = 0; q < kQ; ++q) {
+        rho += f[q];
+        jx += kCx[q] * f[q];
+        jy += kCy[q] * f[q];
+    }
+    const Real ux = (jx + 0.5 * ctx.fx) / rho, uy = (jy + 0.5 * ctx.fy) / rho;
+    for (const Entry* e = first; e != last; ++e) sumEps += e->eps;
+    const Real b = psmWeight(ctx, std::min(sumEps, Real(1)));
+    Real fc[kQ], out[kQ];
+    std::copy(f, f + kQ, fc);
+    collide(fc);
+    for (int q = 0; q < kQ; ++q) out[q] = f[q] + (1 - b) * (fc[q] - f[q]);
+    for (const Entry* e = first; e != last; ++e) {
+        const Real bp = b * e->eps / sumEps;
+        Real sx, sy;
+        surface(e->grain, e->rx, e->ry, sx, sy);
+        Real px = 0, py = 0;
+        for (int q = 0; q < kQ; ++q) {
+            const int o = kOpposite[q];
+            const Real omega = (f[o] - equilibrium(o, rho, ux, uy)) - (f[q] - equilibrium(q, rho, sx, sy));
+            out[q] += bp * omega;
+            px += bp * omega * kCx[q];
+            py += bp * omega * kCy[q];
+        }
+        addLoad(e, -px, -py, -(e->rx * py - e->ry * px));
+    }
+    for (int q = 0; q < kQ; ++q) ctx.next[q * ctx.cells + cell] = out[q];
+}
+
+void Coupling::collidePsm() {
+    using namespace lattice;
+    const LatticeSetup& s = m_lattice.setup();
+    const CollisionParams& p = s.collision;
+    PsmContext ctx{m_lattice.previousPopulations().data(), m_lattice.populations().data(), m_lattice.cells(),
+                   m_lattice.nx(), m_lattice.ny(), s.fx, s.fy, p.tau - 0.5, m_params.psm_weight == PsmWeight::Nt,
+                   s.left.type == SideType::ZouHeVelocity || s.left.type == SideType::ZouHePressure,
+                   s.right.type == SideType::ZouHeVelocity || s.right.type == SideType::ZouHePressure};
+    auto surface = [this](std::int32_t g, Real rx, Real ry, Real& ux, Real& uy) { surfaceVelocity(g, rx, ry, ux, uy); };
+    // Loads go to one slot per entry and are summed per grain afterwards, in entry order, so
+    // the cells can be collided in parallel with a result independent of the thread count.
+    m_linkLoad.resize(3 * m_psm.size());
+    const PsmEntry* base = m_psm.data();
+    Real* slots = m_linkLoad.data();
+    auto addLoad = [base, slots](const PsmEntry* e, Real fx, Real fy, Real t) {
+        const std::size_t k = 3 * static_cast<std::size_t>(e - base);
+        slots[k] = fx;
+        slots[k + 1] = fy;
+        slots[k + 2] = t;
+    };
+    m_linkStart.clear();
+    for (std::size_t k = 0; k < m_psm.size(); ++k)
+        if (k == 0 || m_psm[k].cell != m_psm[k - 1].cell) m_linkStart.push_back(static_cast<long long>(k));
+    m_linkStart.push_back(static_cast<long long>(m_psm.size()));
+    const long long groups = static_cast<long long>(m_linkStart.size()) - 1;
+    auto run = [&](const auto& collide) {
+#pragma omp parallel for schedule(static) if (groups > kParallelMin)
+        for (long long g = 0; g < groups; ++g)
+            psmCell(ctx, collide, base + m_linkStart[g], base + m_linkStart[g + 1], surface, addLoad);
+    };
+    // The same operator, parameters and dispatch as Lattice::step, so a cell with B = 0 is unchanged.
+    const bool force = s.fx != 0 || s.fy != 0;
+    const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
+    switch (p.model) {
+    case CollisionModel::Bgk:
+        if (force) run(BgkCollision<true>{sNu, s.fx, s.fy});
+        else run(BgkCollision<false>{sNu, s.fx, s.fy});
+        break;
+    case CollisionModel::Mrt:
+        if (force) run(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        else run(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        break;
+    case CollisionModel::MrtLes:
+        if (force) run(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        else run(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        break;
+    }
+    for (std::size_t k = 0; k < m_psm.size(); ++k) {
+        const std::int32_t g = m_psm[k].grain;
+        m_loadX[g] += slots[3 * k];
+        m_loadY[g] += slots[3 * k + 1];
+        m_loadT[g] += slots[3 * k + 2];
+    }
+}
+
+} // namespace lbdem::solver::coupling

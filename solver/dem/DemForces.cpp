@@ -1,0 +1,143 @@
+// The contact kernel: linear spring-dashpot normal force, tangential and rolling springs with
+// Coulomb-type limits, for disc pairs and disc-wall contacts, into per-thread force buffers.
+#include "solver/dem/DemSystem.h"
+
+#include "solver/dem/OpenMp.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lbdem::solver::dem {
+
+namespace {
+
+/// Tangential and rolling parts shared by pair and wall contacts. vt is the sliding velocity of
+/// the second body relative to the first along t, spin the relative rotation rate.
+/// Returns the tangential force on the second body along t; sets the rolling torque on the first.
+inline Real tangentialAndRolling(Real fn, Real vt, Real spin, Real dt, Real kt, Real gt, Real mu,
+                                 Real reff, Real muRoll, Real& ut, Real& ur, Real& rollTorque) {
+    // Tangential spring-dashpot with Coulomb limit |F_t| <= mu F_n; the spring is reset to the
+    // limit while sliding, so slip stores no elastic energy.
+    ut += vt * dt;
+    Real ft = -kt * ut - gt * vt;
+    const Real fmax = mu * std::max(fn, Real(0));
+    if (std::abs(ft) > fmax) {
+        ft = std::copysign(fmax, ft);
+        ut = -ft / kt;
+    }
+    // Rolling spring k_r = k_t R_eff^2 (Iwashita & Oda 1998) with plastic limit mu_r R_eff F_n.
+    const Real kr = kt * reff * reff;
+    ur += spin * dt;
+    Real m = -kr * ur;
+    const Real mmax = muRoll * reff * std::max(fn, Real(0));
+    if (std::abs(m) > mmax) {
+        m = std::copysign(mmax, m);
+        ur = kr > 0 ? -m / kr : 0;
+    }
+    rollTorque = m;
+    return ft;
+}
+
+/// Read-only inputs of the kernel: state (with predicted velocities) and contact-law constants.
+struct KernelView {
+    const Real *x, *y, *vx, *vy, *w, *r;
+    Real kn, kt, mu, muWall, muRoll, dt;
+};
+
+/// Forces of the pairs (i, j > i) of one row, accumulated into a thread's buffers.
+inline void pairRow(const KernelView& v, std::size_t i, PairSlot* slot, PairSlot* end, Real* bx, Real* by, Real* bt) {
+    const Real xi = v.x[i], yi = v.y[i], ri = v.r[i];
+    for (; slot < end; ++slot) {
+        PairSlot& s = *slot;
+        const std::int32_t j = s.j;
+        const Real dx = v.x[j] - xi, dy = v.y[j] - yi, reach = ri + v.r[j];
+        const Real d2 = dx * dx + dy * dy;
+        if (d2 >= reach * reach) {
+            s.ut = s.ur = s.fn = s.ft = 0;
+            continue;
+        }
+        const Real d = std::sqrt(d2);
+        const Real nx = dx / d, ny = dy / d; // normal from i to j; tangent t = (-ny, nx)
+        const Real dvx = v.vx[j] - v.vx[i], dvy = v.vy[j] - v.vy[i];
+        const Real vn = dvx * nx + dvy * ny; // > 0: separating
+        const Real vt = -dvx * ny + dvy * nx - (ri * v.w[i] + v.r[j] * v.w[j]);
+        const Real fn = v.kn * (reach - d) - s.gn * vn;
+        Real roll = 0;
+        const Real ft = tangentialAndRolling(fn, vt, v.w[i] - v.w[j], v.dt, v.kt, s.gt, v.mu, s.reff, v.muRoll, s.ut,
+                                             s.ur, roll);
+        s.fn = fn;
+        s.ft = ft;
+        const Real fx = fn * nx - ft * ny, fy = fn * ny + ft * nx; // force on j
+        bx[j] += fx;
+        by[j] += fy;
+        bx[i] -= fx;
+        by[i] -= fy;
+        bt[i] += -ri * ft + roll;
+        bt[j] += -v.r[j] * ft - roll;
+    }
+}
+
+/// Force of one disc-wall contact (the wall is the second body, at rest).
+inline void wallContact(const KernelView& v, WallSlot& s, const Wall& wall, Real* bx, Real* by, Real* bt) {
+    const std::int32_t i = s.i;
+    const Real ex = wall.b.x() - wall.a.x(), ey = wall.b.y() - wall.a.y();
+    const Real len2 = ex * ex + ey * ey;
+    Real t = len2 > 0 ? ((v.x[i] - wall.a.x()) * ex + (v.y[i] - wall.a.y()) * ey) / len2 : 0;
+    t = std::clamp(t, Real(0), Real(1));
+    const Real px = wall.a.x() + t * ex, py = wall.a.y() + t * ey;
+    const Real dx = px - v.x[i], dy = py - v.y[i];
+    const Real d2 = dx * dx + dy * dy, ri = v.r[i];
+    s.px = px;
+    s.py = py;
+    if (d2 >= ri * ri || d2 <= 0) {
+        s.ut = s.ur = s.fn = s.ft = 0;
+        return;
+    }
+    const Real d = std::sqrt(d2);
+    const Real nx = dx / d, ny = dy / d; // from the disc centre to the wall
+    const Real vn = -(v.vx[i] * nx + v.vy[i] * ny);
+    const Real vt = v.vx[i] * ny - v.vy[i] * nx - ri * v.w[i];
+    const Real fn = v.kn * (ri - d) - s.gn * vn;
+    Real roll = 0;
+    const Real ft =
+        tangentialAndRolling(fn, vt, v.w[i], v.dt, v.kt, s.gt, v.muWall, ri, v.muRoll, s.ut, s.ur, roll);
+    s.fn = fn;
+    s.ft = ft;
+    bx[i] -= fn * nx - ft * ny;
+    by[i] -= fn * ny + ft * nx;
+    bt[i] += -ri * ft + roll;
+}
+
+} // namespace
+
+void DemSystem::contactKernel(Real dt, int threads) {
+    const std::size_t n = m_p.size();
+    // Velocities predicted at the end of the step, so that the dashpots see v(t + dt).
+    const KernelView view{m_p.x.data(), m_p.y.data(), m_vx.data(), m_vy.data(), m_w.data(), m_p.radius.data(),
+                          m_material.normal_stiffness, m_kt, m_material.friction, m_material.wall_friction,
+                          m_material.rolling_resistance, dt};
+    const std::uint32_t* start = m_rows.start.data();
+    PairSlot* slots = m_slots.data();
+    WallSlot* wslots = m_wallSlots.data();
+    const std::uint32_t* wallStart = m_wallStart.data();
+    const Wall* walls = m_walls.data();
+    Real* buffer = m_buffer.data();
+#pragma omp parallel num_threads(threads)
+    {
+        // Each thread owns 3 N buffer entries (fx, fy, torque): no write conflicts, no atomics.
+        Real* bx = buffer + 3 * n * static_cast<std::size_t>(ompThreadIndex());
+        Real* by = bx + n;
+        Real* bt = by + n;
+        // Rows, not contacts, are split among threads, and a disc's wall contacts go with its row:
+        // every force lands in the same buffer in the same order whatever the neighbour lists
+        // hold, which keeps a restarted run bit for bit equal for a given thread count.
+#pragma omp for schedule(static)
+        for (std::size_t i = 0; i < n; ++i) {
+            pairRow(view, i, slots + start[i], slots + start[i + 1], bx, by, bt);
+            for (std::uint32_t k = wallStart[i]; k < wallStart[i + 1]; ++k)
+                wallContact(view, wslots[k], walls[wslots[k].wall], bx, by, bt);
+        }
+    }
+}
+
+} // namespace lbdem::solver::dem

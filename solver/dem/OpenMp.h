@@ -1,0 +1,28 @@
+// Thin wrappers so that DEM kernels build with and without OpenMP.
+#pragma once
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace lbdem::solver::dem {
+
+/// Threads an OpenMP parallel region would use by default (1 without OpenMP).
+inline int ompMaxThreads() {
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+/// Index of the calling thread in the current parallel region (0 without OpenMP).
+inline int ompThreadIndex() {
+#ifdef _OPENMP
+    return omp_get_thread_num();
+#else
+    return 0;
+#endif
+}
+
+} // namespace lbdem::solver::dem

@@ -1,0 +1,169 @@
+// Lattice construction: ghost layers, side conditions, wall link lists and macroscopic fields.
+#include "solver/lattice/Lattice.h"
+
+#include "solver/core/InputError.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace lbdem::solver::lattice {
+
+namespace {
+
+bool hasGhost(const SideCondition& side) {
+    return side.type == SideType::Wall || side.type == SideType::FreeSlip ||
+           side.type == SideType::Pressure;
+}
+
+bool isZouHe(const SideCondition& side) {
+    return side.type == SideType::ZouHeVelocity || side.type == SideType::ZouHePressure;
+}
+
+// Corners shared by two ghost sides take the stronger condition: wall > free slip > pressure.
+int priority(SideType type) {
+    return type == SideType::Wall ? 3 : type == SideType::FreeSlip ? 2 : type == SideType::Pressure ? 1 : 0;
+}
+
+int directionOf(int cx, int cy) {
+    for (int q = 0; q < kQ; ++q)
+        if (kCx[q] == cx && kCy[q] == cy) return q;
+    return -1;
+}
+
+} // namespace
+
+CollisionModel collisionFromName(const std::string& name) {
+    if (name == "bgk") return CollisionModel::Bgk;
+    if (name == "mrt") return CollisionModel::Mrt;
+    if (name == "mrt_les") return CollisionModel::MrtLes;
+    throw std::invalid_argument("unknown collision model '" + name + "'");
+}
+
+const char* collisionName(CollisionModel model) {
+    switch (model) {
+    case CollisionModel::Bgk: return "bgk";
+    case CollisionModel::Mrt: return "mrt";
+    case CollisionModel::MrtLes: return "mrt_les";
+    }
+    return "?";
+}
+
+Lattice::Lattice(const LatticeSetup& setup) : m_setup(setup) {
+    const auto& s = m_setup;
+    if (s.nx < 2 || s.ny < 2) throw InputError("the lattice needs at least 2 x 2 fluid nodes");
+    if ((s.left.type == SideType::Periodic) != (s.right.type == SideType::Periodic) ||
+        (s.bottom.type == SideType::Periodic) != (s.top.type == SideType::Periodic))
+        throw InputError("a periodic side needs a periodic opposite side");
+    if (isZouHe(s.bottom) || isZouHe(s.top))
+        throw InputError("Zou-He boundaries are available on the left and right sides only");
+    m_ghostLeft = hasGhost(s.left) ? 1 : 0;
+    m_ghostBottom = hasGhost(s.bottom) ? 1 : 0;
+    m_nx = s.nx + m_ghostLeft + (hasGhost(s.right) ? 1 : 0);
+    m_ny = s.ny + m_ghostBottom + (hasGhost(s.top) ? 1 : 0);
+    m_offsetX = isZouHe(s.left) ? 0.0 : 0.5;
+    m_offsetY = 0.5;
+    m_cells = static_cast<long long>(m_nx) * m_ny;
+    m_f.assign(static_cast<std::size_t>(kQ * m_cells), 0.0);
+    m_flags.assign(static_cast<std::size_t>(m_cells), kFluid);
+    m_side.assign(static_cast<std::size_t>(m_cells), -1);
+    buildSides();
+    buildWallLinks();
+    initialise([](Real, Real, Real&, Real&, Real&) {});
+}
+
+void Lattice::buildSides() {
+    const SideCondition* sides[4] = {&m_setup.left, &m_setup.right, &m_setup.bottom, &m_setup.top};
+    auto mark = [&](long long c, int side) {
+        const SideType type = sides[side]->type;
+        if (m_side[c] >= 0 && priority(sides[m_side[c]]->type) >= priority(type)) return;
+        m_side[c] = side;
+        m_flags[c] = type == SideType::Pressure ? kPressureGhost : kSolid;
+    };
+    for (int j = 0; j < m_ny; ++j) {
+        if (m_ghostLeft) mark(index(0, j), 0);
+        if (hasGhost(m_setup.right)) mark(index(m_nx - 1, j), 1);
+    }
+    for (int i = 0; i < m_nx; ++i) {
+        if (m_ghostBottom) mark(index(i, 0), 2);
+        if (hasGhost(m_setup.top)) mark(index(i, m_ny - 1), 3);
+    }
+    for (long long c = 0; c < m_cells; ++c)
+        if (m_flags[c] != kFluid) m_solids.push_back(c);
+    for (int j = 0; j < m_ny; ++j) {
+        if (isZouHe(m_setup.left) && isFluid(index(0, j))) m_zouHeCells[0].push_back(index(0, j));
+        if (isZouHe(m_setup.right) && isFluid(index(m_nx - 1, j)))
+            m_zouHeCells[1].push_back(index(m_nx - 1, j));
+    }
+}
+
+long long Lattice::neighbour(long long cell, int dir) const {
+    const int i = static_cast<int>(cell % m_nx), j = static_cast<int>(cell / m_nx);
+    return index((i + kCx[dir] + m_nx) % m_nx, (j + kCy[dir] + m_ny) % m_ny);
+}
+
+void Lattice::buildWallLinks() {
+    const SideCondition* sides[4] = {&m_setup.left, &m_setup.right, &m_setup.bottom, &m_setup.top};
+    for (long long c = 0; c < m_cells; ++c) {
+        if (!isFluid(c)) continue;
+        for (int d = 1; d < kQ; ++d) {
+            const long long n = neighbour(c, d);
+            if (m_flags[n] == kFluid || m_flags[n] == kObstacle) continue;
+            const SideCondition& side = *sides[m_side[n]];
+            const int in = kOpposite[d];
+            if (side.type == SideType::Pressure) {
+                m_pressureLinks.push_back({c, d, side.rho});
+                continue;
+            }
+            CopyLink link{in * m_cells + n, d * m_cells + c, 0.0};
+            if (side.type == SideType::Wall) {
+                // Moving wall (Ladd 1994): f_in = f_out + 6 w_in rho_0 (c_in . u_w), rho_0 = 1.
+                link.add = 6.0 * kW[in] * (kCx[in] * side.ux + kCy[in] * side.uy);
+            } else {
+                // Free slip: the incoming population is the mirror image of one leaving a
+                // neighbour along the wall; where that neighbour is not fluid, bounce back.
+                const bool horizontal = m_side[n] >= 2;
+                const int mirror = horizontal ? directionOf(kCx[in], -kCy[in]) : directionOf(-kCx[in], kCy[in]);
+                const int ci = static_cast<int>(c % m_nx), cj = static_cast<int>(c / m_nx);
+                const long long from = horizontal ? index((ci - kCx[in] + m_nx) % m_nx, cj)
+                                                  : index(ci, (cj - kCy[in] + m_ny) % m_ny);
+                if (isFluid(from) && from != c) link.source = mirror * m_cells + from;
+            }
+            m_copyLinks.push_back(link);
+        }
+    }
+}
+
+Real Lattice::density(long long cell) const {
+    Real rho = 0;
+    for (int q = 0; q < kQ; ++q) rho += m_f[q * m_cells + cell];
+    return rho;
+}
+
+void Lattice::velocity(long long cell, Real& ux, Real& uy) const {
+    Real rho = 0, jx = 0, jy = 0;
+    for (int q = 0; q < kQ; ++q) {
+        const Real v = m_f[q * m_cells + cell];
+        rho += v;
+        jx += kCx[q] * v;
+        jy += kCy[q] * v;
+    }
+    ux = (jx - 0.5 * m_setup.fx) / rho;
+    uy = (jy - 0.5 * m_setup.fy) / rho;
+}
+
+Real Lattice::totalMass() const {
+    Real mass = 0;
+    for (long long c = 0; c < m_cells; ++c)
+        if (isFluid(c)) mass += density(c);
+    return mass;
+}
+
+void Lattice::resetSolids(std::vector<Real>& f) const {
+    // Solid nodes are collided by the branch-free bulk kernel too; resetting them to rest keeps
+    // their (unused) values finite. Only the slots the link pass writes are ever read.
+#pragma omp parallel for schedule(static) if (m_cells >= kParallelMinCells)
+    for (std::size_t k = 0; k < m_solids.size(); ++k)
+        for (int q = 0; q < kQ; ++q) f[q * m_cells + m_solids[k]] = kW[q];
+}
+
+} // namespace lbdem::solver::lattice

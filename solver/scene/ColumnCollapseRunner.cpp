@@ -1,0 +1,216 @@
+// The column collapse as a SceneRunner: DEM column, optional lattice and coupling, diagnostics.
+#include "solver/scene/ColumnCollapseRunner.h"
+
+#include "solver/coupling/Coupling.h"
+#include "solver/diagnostics/MassDiagnostics.h"
+#include "solver/lattice/StabilityGuard.h"
+#include "solver/scene/ColumnScene.h"
+#include "solver/scene/ColumnState.h"
+#include "solver/scene/FluidFields.h"
+
+#include <cmath>
+#include <optional>
+
+namespace lbdem::solver {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Two discs belong to one mass while their gap is below this fraction of d_min (DESIGN §6).
+constexpr double kContactGapOfDmin = 0.05;
+/// The front region (Froude number, base stress) spans this many mean diameters behind the front.
+constexpr double kFrontLengthInDiameters = 15.0;
+/// Failure-plane probe: from the gate's foot at this angle to the slope [deg] (Rankine active
+/// wedge 45 + phi/2 for phi = 26 deg), sampled at this many points.
+constexpr double kFailurePlaneDeg = 58.0;
+constexpr int kProbePoints = 64;
+
+lattice::SideType sideOf(const std::string& word) {
+    if (word == "wall") return lattice::SideType::Wall;
+    if (word == "free_slip") return lattice::SideType::FreeSlip;
+    if (word == "periodic") return lattice::SideType::Periodic;
+    return lattice::SideType::Pressure;
+}
+
+lattice::LatticeSetup columnLatticeSetup(const CaseSpec& spec, const Plan& plan) {
+    lattice::LatticeSetup setup;
+    setup.nx = plan.nx;
+    setup.ny = plan.ny;
+    setup.collision = collisionOf(spec, plan.tau);
+    setup.left.type = setup.bottom.type = lattice::SideType::Wall; // no-slip floor and back wall
+    setup.top.type = sideOf(spec.domain.top);
+    setup.right.type = sideOf(spec.domain.right);
+    if (setup.right.type == lattice::SideType::Periodic) setup.left.type = lattice::SideType::Periodic;
+    return setup;
+}
+
+coupling::CouplingParams couplingParams(const CaseSpec& spec, const Plan& plan) {
+    coupling::CouplingParams p;
+    p.method = coupling::couplingMethodFromName(spec.coupling.method);
+    p.psm_weight = coupling::psmWeightFromName(spec.coupling.psm_weight);
+    p.hydro_radius_ratio = spec.coupling.hydro_radius_ratio;
+    p.h = plan.h_m;
+    p.dt = plan.dt_s;
+    p.rho_f = spec.fluid.density_kg_m3;
+    return p;
+}
+
+GrainArrays viewOf(const dem::Particles& p) {
+    return {p.size(), p.x.data(), p.y.data(), p.radius.data(), p.vx.data(), p.vy.data(),
+            p.omega.data(), p.mass.data(), p.inertia.data()};
+}
+
+class ColumnCollapseRunner final : public SceneRunner {
+public:
+    ColumnCollapseRunner(const CaseSpec& spec, const Plan& plan)
+        : m_spec(spec), m_plan(plan), m_column(spec, plan) {
+        const double dMean = spec.grains.d_min_m * (1 + spec.grains.size_ratio) / 2;
+        m_params.contact_gap_m = kContactGapOfDmin * spec.grains.d_min_m;
+        m_params.column_width_m = m_column.initialWidth();
+        m_params.slope_rad = spec.domain.slope_deg * kPi / 180;
+        m_params.gravity_m_s2 = spec.domain.gravity_m_s2;
+        m_params.grain_density = spec.grains.density_kg_m3;
+        m_params.fluid_density = plan.has_fluid ? spec.fluid.density_kg_m3 : 0;
+        m_params.bin_width_m = dMean;
+        m_params.front_length_m = kFrontLengthInDiameters * dMean;
+        // E_p0 with the full gravity in dry and submerged runs alike, so that E_k / E_p0 compares.
+        m_params.initial_potential_j_m = initialPotential();
+        if (plan.has_fluid) {
+            m_lattice.emplace(columnLatticeSetup(spec, plan));
+            m_coupling.emplace(*m_lattice, m_column.system(), couplingParams(spec, plan));
+            m_guard.emplace(plan.h_m);
+        }
+    }
+
+    void step(StageTimer& timer) override {
+        auto t = StageTimer::Clock::now();
+        if (!m_lattice) {
+            m_column.step();
+            timer.lap(Stage::DemSubsteps, t);
+            return;
+        }
+        m_coupling->mapGrains();
+        t = timer.lap(Stage::MapGrains, t);
+        m_lattice->step();
+        t = timer.lap(Stage::StreamCollide, t);
+        if (m_guard->due(m_lattice->stepCount())) m_guard->check(*m_lattice);
+        t = timer.lap(Stage::Boundaries, t);
+        m_coupling->collectForces();
+        t = timer.lap(Stage::HydrodynamicForces, t);
+        m_column.advance(m_plan.dt_s, m_plan.substeps);
+        timer.lap(Stage::DemSubsteps, t);
+    }
+
+    double time() const override { return m_column.time(); }
+
+    void fillSnapshot(Snapshot& snapshot, int downsample) const override {
+        m_column.fillSnapshot(snapshot);
+        const auto d = computeMassDiagnostics(viewOf(m_column.system().particles()), m_params);
+        for (const auto& [x, y] : d.outline) snapshot.outline.emplace_back(float(x), float(y));
+        if (m_lattice) {
+            m_guard->check(*m_lattice); // no output from a diverged state
+            snapshot.fluid.emplace();
+            const LatticeScales scales{m_plan.nx, m_plan.ny, m_plan.h_m, m_plan.dt_s, m_spec.fluid.density_kg_m3};
+            fillFluidSnapshot(*m_lattice, scales, downsample, &m_coupling->solidFraction(), *snapshot.fluid);
+        }
+    }
+
+    void addMetrics(std::map<std::string, double>& m) const override {
+        const auto& particles = m_column.system().particles();
+        const auto d = computeMassDiagnostics(viewOf(particles), m_params);
+        m["runout_m"] = d.front_x_m;
+        m["runout_normalised"] = d.runout_normalised;
+        m["height_m"] = d.height_m;
+        m["height_normalised"] = m_column.initialHeight() > 0 ? d.height_m / m_column.initialHeight() : 0;
+        m["kinetic_energy_j_m"] = d.kinetic_energy_j_m;
+        m["ke_over_ep0"] = d.ke_over_ep0;
+        m["packing_fraction"] = d.packing_fraction;
+        m["front_velocity_m_s"] = d.front_velocity_m_s;
+        m["front_thickness_m"] = d.front_thickness_m;
+        m["main_mass_grains"] = static_cast<double>(d.main_mass_grains);
+        m["max_grain_speed_m_s"] = m_column.system().maxSpeed();
+        m["base_normal_stress_front_pa"] = baseStressAtFront(d.front_x_m);
+        if (m_lattice) {
+            m["froude_densimetric"] = d.froude_densimetric;
+            m["pore_pressure_failure_plane_pa"] = failurePlanePressure();
+        }
+    }
+
+    void save(StateArchive& archive) const override {
+        saveColumnState(m_column, archive);
+        if (!m_lattice) return;
+        archive.reals["lattice/f"] = m_lattice->populations();
+        archive.integers["lattice/step"] = {m_lattice->stepCount()};
+        const auto state = m_coupling->state();
+        archive.integers["coupling/cells"].assign(state.cells.begin(), state.cells.end());
+        archive.integers["coupling/grains"].assign(state.grains.begin(), state.grains.end());
+        archive.integers["coupling/initialised"] = {state.initialised ? 1 : 0};
+    }
+
+    void restore(const StateArchive& archive) override {
+        restoreColumnState(archive, m_column);
+        if (!m_lattice) return;
+        const auto& f = archive.real("lattice/f");
+        if (f.size() != m_lattice->populations().size())
+            throw std::runtime_error("the checkpoint's lattice does not match the case's plan");
+        m_lattice->populations() = f;
+        m_lattice->setStepCount(archive.integer("lattice/step").at(0));
+        coupling::CouplingState state;
+        const auto& cells = archive.integer("coupling/cells");
+        const auto& grains = archive.integer("coupling/grains");
+        state.cells.assign(cells.begin(), cells.end());
+        state.grains.assign(grains.begin(), grains.end());
+        state.initialised = archive.integer("coupling/initialised").at(0) != 0;
+        m_coupling->restore(state);
+    }
+
+private:
+    double initialPotential() const {
+        return potentialEnergy(viewOf(m_column.system().particles()), m_spec.domain.gravity_m_s2,
+                               m_params.slope_rad);
+    }
+
+    /// Grain-floor normal force per unit length over the front region [Pa per unit thickness].
+    double baseStressAtFront(double front) const {
+        double force = 0;
+        for (const auto& c : m_column.system().contacts())
+            if (c.j < 0 && c.py < 1e-9 && c.px > front - m_params.front_length_m) force += c.fn;
+        return force / m_params.front_length_m;
+    }
+
+    /// Mean excess pore pressure along the failure plane of the initial column [Pa].
+    double failurePlanePressure() const {
+        const double angle = kFailurePlaneDeg * kPi / 180;
+        const double width = m_column.initialWidth(), height = m_column.initialHeight();
+        const double length = std::min(width / std::cos(angle), height / std::sin(angle));
+        const double scale = m_spec.fluid.density_kg_m3 * lattice::kCs2 * std::pow(m_plan.h_m / m_plan.dt_s, 2);
+        double sum = 0;
+        int samples = 0;
+        for (int k = 0; k < kProbePoints; ++k) {
+            const double s = (k + 0.5) / kProbePoints * length;
+            const int i = m_lattice->firstFluidX() + static_cast<int>((width - s * std::cos(angle)) / m_plan.h_m);
+            const int j = m_lattice->firstFluidY() + static_cast<int>(s * std::sin(angle) / m_plan.h_m);
+            const long long cell = m_lattice->index(i, j);
+            if (!m_lattice->isFluid(cell)) continue;
+            sum += (m_lattice->density(cell) - 1.0) * scale;
+            ++samples;
+        }
+        return samples ? sum / samples : 0.0;
+    }
+
+    CaseSpec m_spec;
+    Plan m_plan;
+    ColumnScene m_column;
+    MassDiagnosticsParams m_params;
+    std::optional<lattice::Lattice> m_lattice;
+    std::optional<coupling::Coupling> m_coupling;
+    std::optional<lattice::StabilityGuard> m_guard;
+};
+
+} // namespace
+
+std::unique_ptr<SceneRunner> makeColumnCollapseRunner(const CaseSpec& spec, const Plan& plan) {
+    return std::make_unique<ColumnCollapseRunner>(spec, plan);
+}
+
+} // namespace lbdem::solver

@@ -1,0 +1,138 @@
+// The column-collapse scene: packing, walls, gate release, and its snapshot.
+#include "solver/scene/ColumnScene.h"
+
+#include "solver/core/InputError.h"
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace lbdem::solver {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+} // namespace
+
+dem::Material grainMaterial(const GrainSpec& g) {
+    dem::Material m;
+    m.normal_stiffness = g.normal_stiffness_n_m;
+    m.tangential_stiffness = g.tangential_stiffness_n_m;
+    m.restitution = g.restitution;
+    m.friction = std::tan(g.friction_deg * kPi / 180);
+    m.wall_friction = g.wall_friction;
+    m.rolling_resistance = g.rolling_resistance;
+    m.density = g.density_kg_m3;
+    return m;
+}
+
+Vec2 grainGravity(const CaseSpec& spec) {
+    const double theta = spec.domain.slope_deg * kPi / 180, g = spec.domain.gravity_m_s2;
+    const double buoyancy = spec.fluid.enabled ? 1 - spec.fluid.density_kg_m3 / spec.grains.density_kg_m3 : 1;
+    return Vec2(g * std::sin(theta), -g * std::cos(theta)) * buoyancy;
+}
+
+dem::PackingRequest packingRequest(const CaseSpec& spec) {
+    const GrainSpec& g = spec.grains;
+    dem::PackingRequest r;
+    r.count = g.count;
+    r.d_min = g.d_min_m;
+    r.size_ratio = g.size_ratio;
+    r.target = g.packing;
+    r.aspect_ratio = g.aspect_ratio;
+    r.gravity = spec.domain.gravity_m_s2;
+    r.material = grainMaterial(g);
+    r.seed = static_cast<std::uint64_t>(g.seed);
+    return r;
+}
+
+namespace {
+/// The case's thread count applies to the packing generator too, unless the caller chose one.
+dem::PackingOptions withCaseThreads(dem::PackingOptions options, const CaseSpec& spec) {
+    if (options.threads == 0) options.threads = spec.run.threads;
+    return options;
+}
+} // namespace
+
+ColumnScene::ColumnScene(const CaseSpec& spec, const Plan& plan, const dem::PackingOptions& options)
+    : ColumnScene(spec, plan, dem::generatePacking(packingRequest(spec), withCaseThreads(options, spec))) {}
+
+ColumnScene::ColumnScene(const CaseSpec& spec, const Plan& plan, dem::Packing packing)
+    : m_packing(std::move(packing)), m_system(grainMaterial(spec.grains)), m_dt(plan.dem_dt_s),
+      m_submerged(spec.fluid.enabled) {
+    build(spec);
+}
+
+void ColumnScene::build(const CaseSpec& spec) {
+    const double width = spec.domain.width_m, height = spec.domain.height_m;
+    if (m_packing.width > width || m_packing.height > height)
+        throw InputError("the column (" + std::to_string(m_packing.width) + " m wide, " +
+                         std::to_string(m_packing.height) + " m high) does not fit the domain (domain.width = " +
+                         std::to_string(width) + " m, domain.height = " + std::to_string(height) + " m)");
+    if (!m_packing.converged)
+        throw SimulationError("the packing generator reached " + std::to_string(m_packing.fraction) +
+                              " instead of grains.packing = " + std::to_string(m_packing.target));
+    m_system.reserve(m_packing.x.size());
+    m_system.addWall(Vec2(0, 0), Vec2(width, 0));
+    m_system.addWall(Vec2(0, 0), Vec2(0, height));
+    m_system.addWall(Vec2(width, 0), Vec2(width, height));
+    m_gate = m_system.addWall(Vec2(m_packing.width, 0), Vec2(m_packing.width, height));
+    for (std::size_t k = 0; k < m_packing.x.size(); ++k)
+        m_system.addDisc(m_packing.x[k], m_packing.y[k], m_packing.radius[k]);
+    m_system.setGravity(grainGravity(spec));
+    if (spec.run.threads > 0) m_system.setThreads(spec.run.threads);
+    // The gate holds the column while it is built and vanishes at t = 0.
+    m_system.setWallActive(m_gate, false);
+    m_system.computeForces();
+}
+
+void ColumnScene::step() { m_system.step(m_dt); }
+
+void ColumnScene::advance(double dt, int substeps) { m_system.advance(dt, substeps); }
+
+void ColumnScene::fillSnapshot(Snapshot& snapshot) const {
+    snapshot.step = m_system.stepCount();
+    snapshot.time_s = m_system.time();
+    fillSnapshotGrains(m_system, m_submerged, snapshot);
+}
+
+void fillSnapshotGrains(const dem::DemSystem& system, bool withHydro, Snapshot& snapshot) {
+    const dem::Particles& p = system.particles();
+    const std::size_t n = p.size();
+    SnapshotGrains& g = snapshot.grains;
+    auto copy = [n](const std::vector<Real>& from, std::vector<float>& to) {
+        to.resize(n);
+        for (std::size_t k = 0; k < n; ++k) to[k] = static_cast<float>(from[k]);
+    };
+    copy(p.x, g.x);
+    copy(p.y, g.y);
+    copy(p.radius, g.radius);
+    copy(p.vx, g.vx);
+    copy(p.vy, g.vy);
+    copy(p.omega, g.omega);
+    copy(p.fx, g.fx);
+    copy(p.fy, g.fy);
+    if (withHydro) {
+        copy(p.ext_fx, g.hydro_fx);
+        copy(p.ext_fy, g.hydro_fy);
+    } else {
+        g.hydro_fx.clear();
+        g.hydro_fy.clear();
+    }
+    SnapshotContacts& c = snapshot.contacts;
+    c = SnapshotContacts{};
+    for (const dem::ContactForce& f : system.contacts()) {
+        c.i.push_back(f.i);
+        c.j.push_back(f.j);
+        c.wx.push_back(static_cast<float>(f.px));
+        c.wy.push_back(static_cast<float>(f.py));
+        c.normal_force.push_back(static_cast<float>(f.fn));
+        c.tangential_force.push_back(static_cast<float>(std::abs(f.ft)));
+    }
+    snapshot.walls.clear();
+    for (const dem::Wall& w : system.walls())
+        if (w.active)
+            snapshot.walls.push_back({static_cast<float>(w.a.x()), static_cast<float>(w.a.y()),
+                                      static_cast<float>(w.b.x()), static_cast<float>(w.b.y())});
+}
+
+} // namespace lbdem::solver

@@ -1,0 +1,102 @@
+// Planning of the verification flows: characteristic length, Reynolds number, lattice velocity.
+#include "solver/scene/FlowPlan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace lbdem::solver {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSoundSpeed = 0.57735026918962576;
+// Schäfer & Turek (1996) 2D-1: channel height H = 4.1 D; Re uses the mean inflow 2/3 U_max.
+constexpr double kCylinderHeightOverD = 4.1;
+constexpr double kMeanOverPeakInflow = 2.0 / 3.0;
+
+// Steps to a steady state or a clear decay when the case does not say (flow.steps = 0).
+long long defaultSteps(SceneKind kind, const FlowScales& s) {
+    const double n = s.length_m / s.h_m;
+    switch (kind) {
+    case SceneKind::Poiseuille: // slowest mode decays as exp(-pi^2 nu t / H^2): to ~1e-8
+        return std::llround(1.9 * n * n / s.nu_lattice);
+    case SceneKind::TaylorGreen: // amplitude decays as exp(-2 nu k^2 t): to exp(-1)
+        return std::llround(1.0 / (2.0 * s.nu_lattice * std::pow(2 * kPi / n, 2)));
+    case SceneKind::Cavity: // 25 lid passages: at Re = 100, 128^2 the centreline is steady
+        return std::llround(25.0 * n / s.u_peak); // from 20 on (measured, change < 1e-5)
+    case SceneKind::Cylinder: // 3 flow-throughs at the mean inflow: C_D steady to ~1e-4
+        return std::llround(3.0 * s.nx / s.u_ref);
+    default:
+        return 1000;
+    }
+}
+
+} // namespace
+
+bool isFlowScene(SceneKind kind) {
+    return kind == SceneKind::Poiseuille || kind == SceneKind::TaylorGreen ||
+           kind == SceneKind::Cavity || kind == SceneKind::Cylinder;
+}
+
+FlowScales flowScales(const CaseSpec& spec) {
+    const SceneKind kind = sceneFromName(spec.scene);
+    const FlowSpec& f = spec.flow;
+    FlowScales s;
+    const bool cylinder = kind == SceneKind::Cylinder;
+    s.length_m = cylinder ? spec.domain.height_m / kCylinderHeightOverD : spec.domain.height_m;
+    s.h_m = s.length_m / f.nodes;
+    const double refOverPeak = cylinder ? kMeanOverPeakInflow : 1.0;
+    if (f.tau > 0.5) { // diffusive scaling: tau fixed, velocity from Re
+        s.tau = f.tau;
+        s.nu_lattice = (f.tau - 0.5) / 3.0;
+        s.u_ref = f.reynolds * s.nu_lattice / f.nodes;
+        s.u_peak = s.u_ref / refOverPeak;
+    } else {
+        s.u_peak = f.lattice_velocity;
+        s.u_ref = s.u_peak * refOverPeak;
+        s.nu_lattice = s.u_ref * f.nodes / f.reynolds;
+        s.tau = 0.5 + 3.0 * s.nu_lattice;
+    }
+    // dt from the physical viscosity: nu = nu_lattice h^2 / dt.
+    s.dt_s = s.nu_lattice * s.h_m * s.h_m / spec.fluid.viscosity_m2_s;
+    s.ny = static_cast<int>(std::lround(spec.domain.height_m / s.h_m));
+    s.nx = static_cast<int>(std::lround(spec.domain.width_m / s.h_m));
+    if (kind == SceneKind::Cavity || kind == SceneKind::TaylorGreen) s.nx = s.ny = f.nodes;
+    if (cylinder) s.nx += 1; // Zou-He columns sit on x = 0 and x = width
+    s.nx = std::max(s.nx, 4);
+    s.steps = f.steps > 0 ? f.steps : std::max<long long>(defaultSteps(kind, s), 1);
+    return s;
+}
+
+void planFlow(const CaseSpec& spec, Plan& plan) {
+    const FlowScales s = flowScales(spec);
+    plan.has_fluid = true;
+    plan.nx = s.nx;
+    plan.ny = s.ny;
+    plan.h_m = s.h_m;
+    plan.dt_s = s.dt_s;
+    plan.tau = s.tau;
+    plan.nu_lattice = s.nu_lattice;
+    plan.u_expected_m_s = s.u_peak * s.h_m / s.dt_s;
+    plan.mach = s.u_peak / kSoundSpeed;
+    plan.substeps = 1;
+    plan.steps = s.steps;
+    plan.end_time_s = static_cast<double>(s.steps) * s.dt_s;
+    plan.tc_s = s.length_m / std::max(s.u_ref * s.h_m / s.dt_s, 1e-300); // L / U
+    char text[256];
+    if (s.tau - 0.5 < 0.01 && spec.fluid.collision != "mrt_les") {
+        std::snprintf(text, sizeof text,
+                      "tau - 0.5 = %.3g is below 0.01 without LES: the run is likely unstable; "
+                      "use collision = \"mrt_les\"", s.tau - 0.5);
+        plan.warnings.push_back(text);
+    }
+    if (plan.mach > 0.3) {
+        std::snprintf(text, sizeof text,
+                      "peak lattice Mach number %.3g is above 0.3: lower flow.lattice_velocity or "
+                      "raise flow.nodes", plan.mach);
+        plan.warnings.push_back(text);
+    }
+}
+
+} // namespace lbdem::solver

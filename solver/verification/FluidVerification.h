@@ -1,0 +1,19 @@
+// Verification cases of the lattice-Boltzmann fluid solver.
+#pragma once
+
+#include "solver/scene/CaseSpec.h"
+#include "solver/verification/Verification.h"
+
+#include <string>
+#include <vector>
+
+namespace lbdem::solver {
+
+/// poiseuille, taylor-green, cavity-re100, cylinder-2d1 and stability.
+std::vector<VerificationCase> fluidVerificationCases();
+
+/// The case of sample_cases/verification/<file>.toml for scene `scene` ("poiseuille",
+/// "taylor_green", "cavity", "cylinder"), with the resolution and collision model replaced.
+CaseSpec fluidCase(const std::string& scene, int nodes, const std::string& collision);
+
+} // namespace lbdem::solver

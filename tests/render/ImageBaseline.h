@@ -1,0 +1,30 @@
+// Image regression helpers for the render tests: compare with a baseline, keep evidence on failure.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkImageData;
+
+namespace lbdem::support {
+
+/// Outcome of comparing a rendered image with tests/baselines/NAME.png.
+struct BaselineResult {
+    bool passed = false;
+    double error = 0;       ///< vtkImageDifference's thresholded error
+    std::string message;    ///< why it failed, with the paths of the saved actual and diff images
+};
+
+/// Compares `actual` with tests/baselines/`name`.png using vtkImageDifference; above `tolerance`
+/// (or without a baseline) the actual image and the difference image are written to
+/// BUILD/Testing/Temporary/`name`.png and `name`.diff.png.
+BaselineResult compareWithBaseline(vtkImageData* actual, const std::string& name, double tolerance);
+
+/// Reads a PNG file (RGB or RGBA) into an image; null when it cannot be read.
+vtkSmartPointer<vtkImageData> readPng(const std::string& path);
+
+/// Number of distinct RGB colours in `image`, a cheap measure that it is not blank.
+int distinctColours(vtkImageData* image);
+
+} // namespace lbdem::support

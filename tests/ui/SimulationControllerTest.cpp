@@ -1,0 +1,159 @@
+// The solver thread: snapshots arrive, frames are skipped not queued, pause stops them, reset
+// and step work, and shutdown joins the thread (STYLE §3, §7).
+#include "tests/ui/StudioTestCase.h"
+#include "ui/studio/SimulationController.h"
+#include "ui/studio/SimulationWorker.h"
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QTest>
+
+using lbdem::solver::SnapshotPtr;
+using lbdem::studio::RunProgress;
+using lbdem::studio::RunState;
+using lbdem::studio::SimulationController;
+
+class SimulationControllerTest : public QObject {
+    Q_OBJECT
+
+private:
+    // Plays the GUI: takes each snapshot and releases it at once.
+    static void releaseEach(SimulationController& controller) {
+        QObject::connect(&controller, &SimulationController::snapshotReady, &controller,
+                         [&controller](const SnapshotPtr&) { controller.releaseFrame(); });
+    }
+    static long long lastStep(const QSignalSpy& spy) {
+        return spy.last().at(0).value<SnapshotPtr>()->step;
+    }
+
+private slots:
+    void loadPublishesTheStart() {
+        SimulationController controller;
+        QSignalSpy snapshots(&controller, &SimulationController::snapshotReady);
+        QSignalSpy loaded(&controller, &SimulationController::loaded);
+        controller.load(lbdem::studio::test::smallCase());
+        QVERIFY(snapshots.wait(20000));
+        QCOMPARE(loaded.count(), 1);
+        QCOMPARE(lastStep(snapshots), 0LL);
+        QVERIFY(snapshots.last().at(0).value<SnapshotPtr>()->grains.size() > 0);
+        QCOMPARE(controller.state(), RunState::Ready);
+    }
+
+    void runPauseReset() {
+        SimulationController controller;
+        releaseEach(controller);
+        QSignalSpy snapshots(&controller, &SimulationController::snapshotReady);
+        QSignalSpy states(&controller, &SimulationController::stateChanged);
+        controller.load(lbdem::studio::test::smallCase());
+        QVERIFY(snapshots.wait(20000));
+        controller.run();
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.count() >= 4, 20000);
+        QVERIFY(lastStep(snapshots) > 0);
+
+        QElapsedTimer pausing;
+        pausing.start();
+        controller.pause();
+        while (controller.state() != RunState::Paused) QVERIFY(states.wait(5000));
+        qInfo("pause took effect after %lld ms (one batch is about %d ms of stepping)",
+              static_cast<long long>(pausing.elapsed()), lbdem::studio::SimulationWorker::kBatchMs);
+        QTest::qWait(200); // the final frame of the pause may still be on its way
+        const int countAtPause = snapshots.count();
+        const long long stepAtPause = lastStep(snapshots);
+        QTest::qWait(500);
+        QCOMPARE(snapshots.count(), countAtPause);
+        QCOMPARE(lastStep(snapshots), stepAtPause);
+
+        controller.reset();
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.count() > countAtPause, 20000);
+        QCOMPARE(lastStep(snapshots), 0LL);
+        QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Ready, 5000);
+    }
+
+    void stepTakesOneStep() {
+        SimulationController controller;
+        releaseEach(controller);
+        QSignalSpy snapshots(&controller, &SimulationController::snapshotReady);
+        controller.load(lbdem::studio::test::smallCase());
+        QVERIFY(snapshots.wait(20000));
+        controller.step();
+        QVERIFY(snapshots.wait(10000));
+        QCOMPARE(lastStep(snapshots), 1LL);
+        controller.step();
+        QVERIFY(snapshots.wait(10000));
+        QCOMPARE(lastStep(snapshots), 2LL);
+    }
+
+    void framesAreSkippedNotQueued() {
+        SimulationController controller;
+        QSignalSpy snapshots(&controller, &SimulationController::snapshotReady);
+        QSignalSpy progress(&controller, &SimulationController::progressed);
+        controller.load(lbdem::studio::test::smallCase());
+        QVERIFY(snapshots.wait(20000));
+        controller.run();
+        // Nobody releases the first frame: the worker keeps stepping but sends nothing more.
+        QTRY_VERIFY_WITH_TIMEOUT(!progress.isEmpty() &&
+                                     progress.last().at(0).value<RunProgress>().step > 5,
+                                 20000);
+        QCOMPARE(snapshots.count(), 1);
+        controller.releaseFrame();
+        QVERIFY(snapshots.wait(5000));
+        QCOMPARE(snapshots.count(), 2);
+        QVERIFY(lastStep(snapshots) > 5);
+    }
+
+    void runStepsStopsAtTheCount() {
+        SimulationController controller;
+        releaseEach(controller);
+        QSignalSpy snapshots(&controller, &SimulationController::snapshotReady);
+        QSignalSpy completed(&controller, &SimulationController::runCompleted);
+        controller.load(lbdem::studio::test::smallCase());
+        controller.run(25);
+        QVERIFY(completed.wait(30000));
+        QCOMPARE(completed.last().at(0).toLongLong(), 25LL);
+        QTRY_COMPARE_WITH_TIMEOUT(lastStep(snapshots), 25LL, 5000);
+        QCOMPARE(controller.state(), RunState::Paused);
+    }
+
+    void runStepsEndsAtTheEndOfTheCase() {
+        SimulationController controller;
+        releaseEach(controller);
+        QSignalSpy completed(&controller, &SimulationController::runCompleted);
+        // An end time of a few steps: the counted run must still report its completion.
+        controller.load(lbdem::studio::test::smallCase({"run.end_tc=0.001", "run.output_interval_tc=0.001"}));
+        controller.run(1000000);
+        QVERIFY(completed.wait(30000));
+        QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Finished, 5000);
+        QVERIFY(completed.last().at(0).toLongLong() < 1000000);
+    }
+
+    void badCaseReportsFailure() {
+        SimulationController controller;
+        QSignalSpy failed(&controller, &SimulationController::failed);
+        lbdem::solver::CaseSpec spec = lbdem::studio::test::smallCase();
+        spec.grains.count = 200000; // cannot fit in the small domain
+        controller.load(spec);
+        QVERIFY(failed.wait(20000));
+        QVERIFY(!failed.last().at(0).toString().isEmpty());
+        QCOMPARE(controller.state(), RunState::Failed);
+    }
+
+    void shutdownJoinsTheThreadMidRun() {
+        SimulationController controller;
+        releaseEach(controller);
+        QSignalSpy snapshots(&controller, &SimulationController::snapshotReady);
+        controller.load(lbdem::studio::test::smallCase());
+        controller.run();
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.count() >= 2, 20000);
+        QVERIFY(controller.isThreadRunning());
+        QElapsedTimer timer;
+        timer.start();
+        controller.shutdown();
+        qInfo("shutdown mid-run took %lld ms", static_cast<long long>(timer.elapsed()));
+        QVERIFY(!controller.isThreadRunning());
+        controller.run(); // requests after shutdown are dropped, not crashes
+        controller.shutdown();
+    }
+};
+
+QTEST_GUILESS_MAIN(SimulationControllerTest)
+#include "SimulationControllerTest.moc"

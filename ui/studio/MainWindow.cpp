@@ -1,0 +1,314 @@
+// Assembling the studio window: docks, toolbar, menus, shortcuts and the controller's signals.
+#include "ui/studio/MainWindow.h"
+
+#include "solver/core/InputError.h"
+#include "solver/io/CaseLoader.h"
+#include "solver/io/CaseWriter.h"
+#include "ui/studio/CaseEditor.h"
+#include "ui/studio/CaseFiles.h"
+#include "ui/studio/LivePlots.h"
+#include "ui/studio/LiveView.h"
+#include "ui/studio/RunStatusBar.h"
+#include "ui/studio/SimulationController.h"
+#include "ui/studio/ViewControls.h"
+#include "ui/vis/VtkRunWriter.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSplitter>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace lbdem::studio {
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_controller(new SimulationController(this)),
+      m_editor(new CaseEditor), m_view(new LiveView), m_plots(new LivePlots),
+      m_status(new RunStatusBar) {
+    setWindowTitle(tr("lbdem studio"));
+    auto* controls = new ViewControls;
+    auto* viewPane = new QWidget;
+    auto* viewLayout = new QVBoxLayout(viewPane);
+    viewLayout->setContentsMargins(0, 0, 0, 0);
+    viewLayout->setSpacing(0);
+    viewLayout->addWidget(controls);
+    viewLayout->addWidget(m_view, 1);
+    auto* splitter = new QSplitter(Qt::Vertical);
+    splitter->setObjectName("viewPlotSplitter");
+    splitter->addWidget(viewPane);
+    splitter->addWidget(m_plots);
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 1);
+    setCentralWidget(splitter);
+
+    auto* dock = new QDockWidget(tr("Case"), this);
+    dock->setObjectName("caseDock");
+    dock->setWidget(m_editor);
+    m_editor->setMinimumWidth(300);
+    addDockWidget(Qt::LeftDockWidgetArea, dock);
+    setStatusBar(m_status);
+
+    createActions();
+    createMenus();
+    connectController();
+    connect(controls, &ViewControls::layersChanged, m_view, &LiveView::setLayers);
+    connect(controls, &ViewControls::resetCameraRequested, m_view, &LiveView::resetCamera);
+    connect(controls, &ViewControls::chainThresholdChanged, m_view, &LiveView::setChainThreshold);
+    connect(m_view, &LiveView::probed, m_status, &RunStatusBar::setProbe);
+    connect(m_editor, &CaseEditor::caseEdited, this, [this] {
+        m_caseChangedSinceLoad = true;
+        updateActions();
+    });
+    restoreSettings();
+    controls->setLayers(m_view->layers());
+    updateActions();
+}
+
+MainWindow::~MainWindow() { m_controller->shutdown(); }
+
+void MainWindow::createActions() {
+    auto make = [this](const QString& text, QKeySequence key, const QString& tip) {
+        auto* action = new QAction(text, this);
+        action->setShortcut(key);
+        action->setToolTip(QString("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
+        return action;
+    };
+    m_open = make(tr("&Open case..."), QKeySequence::Open, tr("Open a TOML case file"));
+    m_save = make(tr("&Save case as..."), QKeySequence::SaveAs, tr("Save the edited case as TOML"));
+    m_quit = make(tr("&Quit"), QKeySequence::Quit, tr("Stop the run and close the studio"));
+    m_run = make(tr("&Run"), QKeySequence(Qt::Key_F5), tr("Run the case"));
+    m_pause = make(tr("&Pause"), QKeySequence(Qt::Key_F6), tr("Pause after the current batch"));
+    m_step = make(tr("S&tep"), QKeySequence(Qt::Key_F7), tr("Take one step"));
+    m_reset = make(tr("R&eset"), QKeySequence(Qt::CTRL | Qt::Key_R),
+                   tr("Rebuild the case from its start with the edited parameters"));
+    m_exportPng = make(tr("Export view as &PNG..."), QKeySequence(Qt::CTRL | Qt::Key_E),
+                       tr("Save the live view as a PNG image"));
+    m_exportCsv = make(tr("Export plots as &CSV..."), QKeySequence(),
+                       tr("Save the metrics of every frame shown as CSV"));
+    m_recordVtk = make(tr("Record &VTU series..."), QKeySequence(),
+                       tr("Write every frame shown as VTU/VTI files with .pvd series for ParaView"));
+    m_recordVtk->setCheckable(true);
+    connect(m_open, &QAction::triggered, this, &MainWindow::openDialog);
+    connect(m_save, &QAction::triggered, this, &MainWindow::saveDialog);
+    connect(m_quit, &QAction::triggered, this, &QWidget::close);
+    connect(m_run, &QAction::triggered, this, &MainWindow::startRun);
+    connect(m_pause, &QAction::triggered, m_controller, &SimulationController::pause);
+    connect(m_step, &QAction::triggered, m_controller, &SimulationController::step);
+    connect(m_reset, &QAction::triggered, this, &MainWindow::resetRun);
+    connect(m_exportPng, &QAction::triggered, this, &MainWindow::exportPng);
+    connect(m_exportCsv, &QAction::triggered, this, &MainWindow::exportCsv);
+    connect(m_recordVtk, &QAction::toggled, this, &MainWindow::toggleVtkRecording);
+
+    auto* toolbar = addToolBar(tr("Run"));
+    toolbar->setObjectName("runToolbar");
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    for (QAction* action : {m_open, m_save}) toolbar->addAction(action);
+    toolbar->addSeparator();
+    for (QAction* action : {m_run, m_pause, m_step, m_reset}) toolbar->addAction(action);
+    toolbar->addSeparator();
+    toolbar->addAction(m_exportPng);
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_open);
+    m_recentMenu = file->addMenu(tr("Open &recent"));
+    m_presetMenu = file->addMenu(tr("Open &preset"));
+    for (const QString& preset : samplePresets()) {
+        const QString path = sampleCasesDir() + "/" + preset;
+        const QString folder = preset.contains('/') ? preset.section('/', 0, 0) : QString();
+        QMenu* menu = m_presetMenu;
+        if (!folder.isEmpty()) {
+            const auto existing = m_presetMenu->findChildren<QMenu*>(folder, Qt::FindDirectChildrenOnly);
+            menu = existing.isEmpty() ? m_presetMenu->addMenu(folder) : existing.front();
+            menu->setObjectName(folder);
+        }
+        menu->addAction(preset.section('/', -1), this, [this, path] { openCaseFile(path); });
+    }
+    m_presetMenu->setEnabled(!m_presetMenu->isEmpty());
+    file->addAction(m_save);
+    file->addSeparator();
+    for (QAction* action : {m_exportPng, m_exportCsv, m_recordVtk}) file->addAction(action);
+    file->addSeparator();
+    file->addAction(m_quit);
+    QMenu* run = menuBar()->addMenu(tr("&Run"));
+    for (QAction* action : {m_run, m_pause, m_step, m_reset}) run->addAction(action);
+    rebuildRecentMenu();
+}
+
+void MainWindow::connectController() {
+    connect(m_controller, &SimulationController::snapshotReady, this, &MainWindow::showSnapshot);
+    connect(m_controller, &SimulationController::loaded, this, [this](const solver::Plan& plan) {
+        m_plots->clear();
+        m_status->setPlan(plan);
+    });
+    connect(m_controller, &SimulationController::progressed, m_status, &RunStatusBar::setProgress);
+    connect(m_controller, &SimulationController::stateChanged, this, [this](RunState state) {
+        m_status->setState(state);
+        updateActions();
+    });
+    connect(m_controller, &SimulationController::failed, this, [this](const QString& message) {
+        m_status->addWarning(message);
+        m_status->showMessage(message);
+    });
+}
+
+void MainWindow::showSnapshot(const solver::SnapshotPtr& snapshot) {
+    QElapsedTimer drawing;
+    drawing.start();
+    const bool first = !m_shown || m_shown->step > snapshot->step;
+    m_shown = snapshot;
+    m_view->showSnapshot(snapshot);
+    if (first) m_view->resetCamera();
+    m_plots->addSnapshot(*snapshot);
+    if (m_vtkWriter) m_vtkWriter->write(*snapshot);
+    // Release only after drawing: the worker sends the next frame when this one is done, and
+    // not before the GUI had as much time for input as it spent drawing.
+    m_controller->releaseFrame(int(drawing.elapsed()));
+    emit snapshotShown(snapshot);
+}
+
+bool MainWindow::openCaseFile(const QString& path, QString* error) {
+    try {
+        setCase(io::loadCase(path.toStdString()), path);
+        rememberCaseFile(path);
+        rebuildRecentMenu();
+        return true;
+    } catch (const std::exception& failure) {
+        const QString message = QString::fromStdString(failure.what());
+        if (error)
+            *error = message;
+        else
+            QMessageBox::warning(this, tr("Cannot open case"), message);
+        return false;
+    }
+}
+
+void MainWindow::setCase(const solver::CaseSpec& spec, const QString& source) {
+    m_casePath = source;
+    setWindowTitle(tr("%1 - lbdem studio").arg(QFileInfo(source).fileName()));
+    m_editor->setCase(spec);
+    m_controller->load(spec);
+    m_caseChangedSinceLoad = false;
+    updateActions();
+}
+
+void MainWindow::startRun() {
+    if (!m_editor->isValid()) return;
+    if (m_controller->state() == RunState::Empty || m_controller->state() == RunState::Failed)
+        m_controller->load(m_editor->currentCase());
+    m_controller->run();
+}
+
+void MainWindow::resetRun() {
+    if (!m_editor->isValid()) return;
+    m_controller->load(m_editor->currentCase());
+    m_caseChangedSinceLoad = false;
+    updateActions();
+}
+
+void MainWindow::updateActions() {
+    const RunState state = m_controller->state();
+    const bool valid = m_editor->isValid();
+    const bool running = state == RunState::Running;
+    m_run->setEnabled(valid && !running && state != RunState::Finished);
+    m_pause->setEnabled(running);
+    m_step->setEnabled(!running && (state == RunState::Ready || state == RunState::Paused));
+    m_reset->setEnabled(valid);
+    m_save->setEnabled(valid);
+    if (m_caseChangedSinceLoad && state != RunState::Empty)
+        m_status->showMessage(tr("Edits apply on Reset (Ctrl+R)."));
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    for (const QString& path : recentCaseFiles())
+        m_recentMenu->addAction(path, this, [this, path] { openCaseFile(path); });
+    m_recentMenu->setEnabled(!m_recentMenu->isEmpty());
+}
+
+void MainWindow::openDialog() {
+    const QString dir = QSettings().value("files/lastDir", sampleCasesDir()).toString();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open case"), dir, tr("Cases (*.toml)"));
+    if (path.isEmpty()) return;
+    QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
+    openCaseFile(path);
+}
+
+void MainWindow::saveDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save case"), m_casePath, tr("Cases (*.toml)"));
+    if (path.isEmpty()) return;
+    try {
+        io::writeCase(m_editor->currentCase(), path.toStdString());
+        m_casePath = path;
+        rememberCaseFile(path);
+        rebuildRecentMenu();
+    } catch (const std::exception& failure) {
+        QMessageBox::warning(this, tr("Cannot save case"), QString::fromStdString(failure.what()));
+    }
+}
+
+void MainWindow::exportPng() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export view"), "view.png", tr("PNG (*.png)"));
+    if (path.isEmpty()) return;
+    if (!m_view->grabImage().save(path, "PNG"))
+        QMessageBox::warning(this, tr("Cannot export"), tr("Could not write %1.").arg(path));
+}
+
+void MainWindow::exportCsv() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export plots"), "metrics.csv", tr("CSV (*.csv)"));
+    if (path.isEmpty()) return;
+    try {
+        m_plots->writeCsv(path);
+    } catch (const std::exception& failure) {
+        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(failure.what()));
+    }
+}
+
+void MainWindow::toggleVtkRecording(bool on) {
+    m_vtkWriter.reset();
+    if (!on) return;
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Record VTU series into"));
+    try {
+        if (!dir.isEmpty()) m_vtkWriter = std::make_unique<vis::VtkRunWriter>(dir.toStdString());
+    } catch (const std::exception& failure) {
+        QMessageBox::warning(this, tr("Cannot record"), QString::fromStdString(failure.what()));
+    }
+    if (!m_vtkWriter) m_recordVtk->setChecked(false);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    m_controller->shutdown();
+    saveSettings();
+    event->accept();
+}
+
+void MainWindow::restoreSettings() {
+    QSettings settings;
+    if (!restoreGeometry(settings.value("window/geometry").toByteArray())) resize(1400, 900);
+    restoreState(settings.value("window/state").toByteArray());
+    const QString layers = settings.value("view/layers").toString();
+    vis::LayerSet set = m_view->layers();
+    try {
+        if (!layers.isEmpty()) set = vis::parseLayerSet(layers.toStdString());
+    } catch (const std::exception&) {
+        // A settings file from another version: keep the default layers.
+    }
+    m_view->setLayers(set);
+}
+
+void MainWindow::saveSettings() const {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    settings.setValue("view/layers", QString::fromStdString(vis::layerSetToString(m_view->layers())));
+}
+
+} // namespace lbdem::studio

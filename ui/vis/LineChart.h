@@ -1,0 +1,46 @@
+// Line charts (VTK charts, rendered off-screen to PNG) for time series and sweep results.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace lbdem::vis {
+
+/// One named curve of (x, y) points, drawn in the order given.
+struct ChartSeries {
+    std::string name;
+    std::vector<double> x, y;
+    bool markers = false; ///< draw a marker at each point (for sparse data such as a sweep)
+};
+
+/// A dashed reference line across the plot: horizontal at y = value, or vertical at x = value.
+struct ReferenceLine {
+    std::string name;
+    double value = 0;
+    bool horizontal = true;
+};
+
+/// What to plot: title, axis titles with units, curves and reference lines.
+struct ChartSpec {
+    std::string title;
+    std::string xTitle, yTitle;
+    std::vector<ChartSeries> series;
+    std::vector<ReferenceLine> references;
+    bool legend = true;
+};
+
+/// Renders `spec` off-screen at `width` x `height` pixels into the PNG file `path`; needs an
+/// X display (see ensureDisplay). Throws std::invalid_argument for a series whose x and y
+/// lengths differ or a spec with no points at all.
+void renderLineChart(const ChartSpec& spec, const std::string& path, int width, int height);
+
+/// A chart of time series against t/tau_c, e.g. runout or E_k/E_p0 of several runs.
+ChartSpec timeSeriesChart(const std::string& title, const std::string& yTitle,
+                          std::vector<ChartSeries> series);
+/// Froude number against t/tau_c with the hydroplaning threshold Fr = 0.4 as a reference line.
+ChartSpec froudeChart(std::vector<ChartSeries> series);
+/// Final runout [m] against slope [deg], one series per scene kind (dry, wet dense, wet loose),
+/// with markers at the swept slopes.
+ChartSpec runoutVsSlopeChart(std::vector<ChartSeries> series);
+
+} // namespace lbdem::vis
