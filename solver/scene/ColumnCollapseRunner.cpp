@@ -93,10 +93,11 @@ public:
         t = timer.lap(Stage::MapGrains, t);
         m_lattice->step();
         t = timer.lap(Stage::StreamCollide, t);
-        if (m_guard->due(m_lattice->stepCount())) m_guard->check(*m_lattice);
-        t = timer.lap(Stage::Boundaries, t);
         m_coupling->collectForces();
         t = timer.lap(Stage::HydrodynamicForces, t);
+        // After collectForces: covered nodes hold leftovers of the bulk kernel until then.
+        if (m_guard->due(m_lattice->stepCount())) m_guard->check(*m_lattice);
+        t = timer.lap(Stage::Diagnostics, t);
         m_column.advance(m_plan.dt_s, m_plan.substeps);
         timer.lap(Stage::DemSubsteps, t);
     }
