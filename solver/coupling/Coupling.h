@@ -48,12 +48,15 @@ struct GrainLoad {
     Real fx = 0, fy = 0, torque = 0;
 };
 
-/// Restart state: the nodes covered at the last mapGrains, in order, with their grains, and
-/// whether covering momentum is being tracked yet (bounce-back; PSM keeps no state).
+/// Restart state: the nodes covered at the last mapGrains, in order, with their grains, whether
+/// covering momentum is being tracked yet, and the raw loads of the last step (fx, fy, torque per
+/// grain, lattice units; empty before the first) that the next step averages with (bounce-back;
+/// PSM keeps no state).
 struct CouplingState {
     std::vector<long long> cells;
     std::vector<std::int32_t> grains;
     bool initialised = false;
+    std::vector<Real> previous_loads;
 };
 
 /// Couples a Lattice and a DemSystem. Per fluid step, in this order:
@@ -76,10 +79,11 @@ public:
     void mapGrains();
     /// Finish the fluid step: PSM collision of the partly solid cells and their loads; then write
     /// the SI loads into the particles' ext_fx, ext_fy, ext_torque (and shift fx, fy, torque by
-    /// the change so the next DEM step starts from consistent totals).
+    /// the change so the next DEM step starts from consistent totals). Bounce-back hands the DEM
+    /// the mean of this step's and the last step's load (see collectForces for why).
     void collectForces();
 
-    /// Hydrodynamic load on grain i of the last step [N/m, N m/m].
+    /// Hydrodynamic load on grain i of the last step [N/m, N m/m] (raw, before the two-step mean).
     GrainLoad load(std::size_t i) const;
     /// Hydrodynamic load on grain i of the last step, lattice units.
     GrainLoad latticeLoad(std::size_t i) const;
@@ -141,6 +145,7 @@ private:
     std::vector<PsmEntry> m_psm;
     std::vector<long long> m_psmCells;  // cells touched by the last PSM mapping
     std::vector<Real> m_loadX, m_loadY, m_loadT; // lattice units, per grain
+    std::vector<Real> m_previousLoad;   // bounce-back: (fx, fy, torque) per grain of the step before
 };
 
 // Inline helpers of the per-node loops (they run once per covered node or link).

@@ -146,6 +146,7 @@ public:
         archive.integers["coupling/cells"].assign(state.cells.begin(), state.cells.end());
         archive.integers["coupling/grains"].assign(state.grains.begin(), state.grains.end());
         archive.integers["coupling/initialised"] = {state.initialised ? 1 : 0};
+        archive.reals["coupling/previous_loads"] = state.previous_loads;
     }
 
     void restore(const StateArchive& archive) override {
@@ -162,6 +163,8 @@ public:
         state.cells.assign(cells.begin(), cells.end());
         state.grains.assign(grains.begin(), grains.end());
         state.initialised = archive.integer("coupling/initialised").at(0) != 0;
+        if (archive.reals.count("coupling/previous_loads")) // absent in older checkpoints
+            state.previous_loads = archive.real("coupling/previous_loads");
         m_coupling->restore(state);
     }
 

@@ -136,7 +136,18 @@ void SimulationWorker::stopRunning(RunState next) {
 
 void SimulationWorker::publish() {
     if (!m_simulation) return;
-    emit snapshotReady(m_simulation->snapshot());
+    solver::SnapshotPtr snapshot;
+    try {
+        snapshot = m_simulation->snapshot();
+    } catch (const std::exception& error) {
+        // No exception may cross Qt's event loop: a failing snapshot stops the run instead.
+        m_stepsLeft = 0;
+        m_dirty = false;
+        setState(RunState::Failed);
+        emit failed(QString::fromStdString(error.what()));
+        return;
+    }
+    emit snapshotReady(snapshot);
     m_frameInFlight = true;
     m_dirty = false;
     m_sincePublish.restart();
