@@ -1,6 +1,7 @@
 // `lbdem verify`: run named verification cases and report error against tolerance.
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
+#include "app/cli/PermeabilityPlot.h"
 #include "solver/core/InputError.h"
 #include "solver/core/TextDistance.h"
 #include "solver/verification/Verification.h"
@@ -10,12 +11,16 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 namespace lbdem::cli {
 
 namespace {
+
+constexpr const char* kPermeabilityTable = "coupling-permeability.csv";
+constexpr const char* kPermeabilityPlot = "coupling-permeability.png";
 
 struct VerifyOptions {
     std::vector<std::string> names;
@@ -84,6 +89,12 @@ int runVerify(const VerifyOptions& options) {
         }
     }
     if (options.json) std::cout << records.dump(2) << "\n";
+    for (const auto* c : cases) {
+        // The permeability case writes its table; draw it as the paper's Figure 3 beside it.
+        if (c->name == "permeability" && std::filesystem::exists(kPermeabilityTable) &&
+            writePermeabilityPlot(kPermeabilityTable, kPermeabilityPlot))
+            std::cerr << "wrote " << kPermeabilityTable << " and " << kPermeabilityPlot << "\n";
+    }
     return allPassed ? kExitOk : kExitFailure;
 }
 
