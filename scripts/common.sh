@@ -1,9 +1,5 @@
 # Shared steps of run.sh and test.sh: Debian packages, configure and build.
 
-# OpenMP threads sleep instead of spinning while they wait: on a shared 2-core machine the
-# default busy-waiting made kernels up to ten times slower whenever another process ran.
-export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
-
 # Debian packages the build and the tests need (README explains each).
 LBDEM_PACKAGES=(build-essential cmake ninja-build pkg-config libeigen3-dev libtomlplusplus-dev
     libcli11-dev nlohmann-json3-dev libhdf5-dev qtbase5-dev libqt5opengl5-dev libvtk9-dev
