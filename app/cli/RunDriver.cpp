@@ -154,8 +154,11 @@ void RunDriver::run() {
     p.series = std::make_unique<io::TimeSeriesWriter>(seriesPath, m_options.resumed);
     p.firstStep = m_simulation.stepIndex();
     const double now = m_simulation.time();
-    p.outputIndex = static_cast<long long>(std::llround(now / outputInterval));
-    p.nextOutputS = m_options.resumed ? (p.outputIndex + 1) * outputInterval : now;
+    // A resumed run has written every output time up to now (within half a step).
+    p.outputIndex = m_options.resumed
+                        ? static_cast<long long>(std::floor((now + 0.5 * plan.dt_s) / outputInterval)) + 1
+                        : 0;
+    p.nextOutputS = m_options.resumed ? p.outputIndex * outputInterval : now;
     p.nextCheckpointS = checkpointInterval > 0 ? now + checkpointInterval : 1e300;
     const double endS = m_options.until_tc > 0 ? m_options.until_tc * plan.tc_s : plan.end_time_s;
     const double halfStep = 0.5 * plan.dt_s;
