@@ -3,6 +3,8 @@
 # Apply the project's compile options to TARGET (warnings, -march, sanitizer).
 function(lbdem_configure_target target)
     target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+    # sqrt need not set errno: without this flag a loop calling std::sqrt cannot be vectorised.
+    target_compile_options(${target} PRIVATE -fno-math-errno)
     if(LBDEM_STRICT)
         target_compile_options(${target} PRIVATE -Werror)
     endif()

@@ -21,6 +21,7 @@ int runCli(int argc, char** argv) {
     addVerifyCommand(app, exitCode);
     addBenchCommand(app, exitCode);
     addSweepCommand(app, exitCode);
+    addStudyCommand(app, exitCode);
 #ifdef LBDEM_HAS_VIS
     addRenderCommand(app, exitCode);
 #endif

@@ -19,5 +19,7 @@ void addBenchCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 /// `lbdem sweep`: run the cases of a sweep file as separate processes, then tabulate them.
 void addSweepCommand(CLI::App& app, int& exitCode);
+/// `lbdem study`: run a case over several values of a key, then tabulate error against wall time.
+void addStudyCommand(CLI::App& app, int& exitCode);
 
 } // namespace lbdem::cli

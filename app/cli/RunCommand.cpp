@@ -2,6 +2,7 @@
 #include "app/cli/CaseOptions.h"
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
+#include "app/cli/ProfileSink.h"
 #include "app/cli/RunDriver.h"
 #include "app/cli/RunSinks.h"
 #include "solver/core/InputError.h"
@@ -54,6 +55,7 @@ void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions
     SinkOptions sinkOptions{spec.output.vtk, spec.output.vtk_every, options.renderEveryTc,
                             spec.run.output_interval_tc, resumed};
     for (auto& sink : makeRunSinks(dir.string(), sinkOptions)) driver.addSink(std::move(sink));
+    driver.addSink(makeProfileSink(dir.string()));
     driver.run();
     if (!options.quiet) std::cout << "outputs in " << dir.string() << "/\n";
 }

@@ -62,6 +62,7 @@ struct RunDriver::Progress {
     long long firstStep = 0;
     double kePeak = 0, tKePeakOverTc = 0;
     std::map<std::string, double> lastMetrics;
+    long long lastOutputStep = -1;
     Clock::time_point start = Clock::now();
 };
 
@@ -84,6 +85,7 @@ void RunDriver::writeOutput() {
         p.tKePeakOverTc = m_simulation.timeOverTc();
     }
     p.lastMetrics = metrics;
+    p.lastOutputStep = m_simulation.stepIndex();
     if (!m_sinks.empty()) {
         const auto snapshot = m_simulation.snapshot();
         for (auto& sink : m_sinks) sink->write(*snapshot, p.outputIndex);
@@ -123,6 +125,13 @@ void RunDriver::writeSummary(double wallSeconds, bool finished) const {
     summary["packing_final"] = final("packing_fraction");
     summary["ke_peak"] = p.kePeak;
     summary["t_ke_peak_over_tc"] = p.tKePeakOverTc;
+    // Where the time went, per stage of the step (this process only; outputs are not counted).
+    nlohmann::json stages = nlohmann::json::object();
+    for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k) {
+        const auto stage = static_cast<solver::Stage>(k);
+        stages[std::string(solver::stageName(stage))] = m_simulation.timer().seconds(stage);
+    }
+    summary["stage_seconds"] = stages;
     io::writeFileAtomically((m_options.dir / "summary.json").string(), summary.dump(2) + "\n");
 }
 
@@ -178,6 +187,9 @@ void RunDriver::run() {
         m_simulation.step();
         reportProgress(seconds(p.start), false);
     }
+    // The flows end between output times: record the final state too, so that summary.json's
+    // "final" is the end of the run (not done at an --until-tc stop, to keep resumes aligned).
+    if (m_simulation.finished() && m_simulation.stepIndex() != p.lastOutputStep) writeOutput();
     writeCheckpoint();
     writeSummary(seconds(p.start), m_simulation.finished());
     reportProgress(seconds(p.start), true);

@@ -80,9 +80,10 @@ int runSweep(const SweepOptions& options) {
                       << static_cast<long long>(result.wall_s) << " s\n"
                       << std::flush;
     });
-    const auto written = writeSweepReport(sweep.name, entries, out);
+    const auto report = writeSweepReport(sweep.name, entries, out);
     if (!options.quiet)
-        for (const auto& path : written) std::cout << "wrote " << path << "\n";
+        for (const auto& path : report.files) std::cout << "wrote " << path << "\n";
+    if (!report.note.empty() && !options.quiet) std::cerr << "note: no sweep figures: " << report.note << "\n";
     return failures == 0 ? kExitOk : kExitFailure;
 }
 

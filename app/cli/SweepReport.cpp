@@ -1,6 +1,7 @@
-// Sweep table (CSV and Markdown) from the runs' summaries.
+// Sweep table (CSV and Markdown) from the runs' summaries, and the figures' section.
 #include "app/cli/SweepReport.h"
 
+#include "app/cli/SweepFigures.h"
 #include "solver/io/CaseWriter.h"
 
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@ namespace {
 struct Row {
     std::string name, packing, slope, medium, status;
     double runout = 0, kePeak = 0, tKePeak = 0, packingFinal = 0, wall = 0, mlups = 0;
+    SweepFigureCase figure; ///< what the figures need of this case
 };
 
 std::string number(double value, const char* pattern = "%.4g") {
@@ -34,9 +36,11 @@ Row readRow(const SweepEntry& entry) {
     row.packing = number(entry.spec.grains.packing, "%.2f");
     row.slope = number(entry.spec.domain.slope_deg, "%.1f");
     row.medium = entry.spec.fluid.enabled ? "submerged" : "dry";
+    row.figure = {entry.spec.name, entry.spec.grains.packing, entry.spec.domain.slope_deg,
+                  entry.spec.fluid.enabled, "", 0.0, entry.dir};
     std::ifstream file(entry.dir / "summary.json");
     if (!file) {
-        row.status = "missing";
+        row.status = row.figure.status = "missing";
         return row;
     }
     try {
@@ -48,16 +52,34 @@ Row readRow(const SweepEntry& entry) {
         row.packingFinal = numberOr(summary, "packing_final");
         row.wall = numberOr(summary, "wall_s");
         row.mlups = numberOr(summary, "mlups");
+        row.figure.runout_final = row.runout;
     } catch (const nlohmann::json::exception&) {
         row.status = "unreadable";
     }
+    row.figure.status = row.status;
     return row;
+}
+
+/// The Markdown section that shows the figures and names what they leave out.
+std::string figuresSection(const SweepFiguresResult& figures, const std::filesystem::path& out) {
+    std::string md = "\n## Figures\n\n";
+    if (!figures.unavailable.empty()) md += "No figures: " + figures.unavailable + ".\n\n";
+    for (const auto& file : figures.files) {
+        const std::string name = std::filesystem::path(file).lexically_relative(out).string();
+        md += "![" + std::filesystem::path(file).stem().string() + "](" + name + ")\n\n";
+    }
+    if (!figures.skipped.empty()) {
+        md += "Not in the figures:";
+        for (std::size_t k = 0; k < figures.skipped.size(); ++k) md += (k ? ", " : " ") + figures.skipped[k];
+        md += ".\n";
+    }
+    return md;
 }
 
 } // namespace
 
-std::vector<std::string> writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
-                                          const std::filesystem::path& out) {
+SweepReportResult writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
+                                   const std::filesystem::path& out) {
     std::vector<Row> rows;
     for (const auto& entry : entries) rows.push_back(readRow(entry));
     std::string csv = "case,packing,slope_deg,medium,status,runout_final,ke_peak,t_ke_peak_over_tc,"
@@ -75,9 +97,15 @@ std::vector<std::string> writeSweepReport(const std::string& name, const std::ve
               number(r.tKePeak, "%.2f") + " | " + number(r.packingFinal, "%.3f") + " | " +
               number(r.wall, "%.0f") + " | " + number(r.mlups, "%.0f") + " |\n";
     }
+    std::vector<SweepFigureCase> figureCases;
+    for (const auto& r : rows) figureCases.push_back(r.figure);
+    const SweepFiguresResult figures = writeSweepFigures(name, figureCases, out);
+    md += figuresSection(figures, out);
     io::writeFileAtomically((out / "sweep.csv").string(), csv);
     io::writeFileAtomically((out / "sweep.md").string(), md);
-    return {(out / "sweep.csv").string(), (out / "sweep.md").string()};
+    SweepReportResult result{{(out / "sweep.csv").string(), (out / "sweep.md").string()}, figures.unavailable};
+    result.files.insert(result.files.end(), figures.files.begin(), figures.files.end());
+    return result;
 }
 
 } // namespace lbdem::cli

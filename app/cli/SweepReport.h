@@ -15,9 +15,16 @@ struct SweepEntry {
     std::filesystem::path dir;
 };
 
+/// What writeSweepReport wrote.
+struct SweepReportResult {
+    std::vector<std::string> files; ///< sweep.csv, sweep.md and the PNG figures
+    std::string note;               ///< why figures are missing (no VTK, nothing finished ...)
+};
+
 /// Write OUT/sweep.csv, OUT/sweep.md and (when built with VTK) the paper's figures as PNG, from
-/// each case's summary.json and timeseries.csv; returns the paths written.
-std::vector<std::string> writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
-                                          const std::filesystem::path& out);
+/// each case's summary.json and timeseries.csv; sweep.md links the figures and names the cases
+/// left out of them.
+SweepReportResult writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
+                                   const std::filesystem::path& out);
 
 } // namespace lbdem::cli

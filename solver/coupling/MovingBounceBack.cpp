@@ -36,7 +36,6 @@ void Coupling::coverNodes() {
     m_cover.clear();
     for (const Cover& c : m_oldCover) m_owner[c.cell] = kJustUncovered;
     Real* f = m_lattice.populations().data();
-    const long long cells = m_lattice.cells();
     const std::size_t n = m_dem.particles().size();
     for (std::size_t p = 0; p < n; ++p) {
         Real cx, cy, r;
@@ -55,8 +54,8 @@ void Coupling::coverNodes() {
                     // Fluid swallowed by the grain hands its momentum to it.
                     Real jx = 0, jy = 0;
                     for (int q = 1; q < kQ; ++q) {
-                        jx += kCx[q] * f[q * cells + c];
-                        jy += kCy[q] * f[q * cells + c];
+                        jx += kCx[q] * f[m_lattice.postSlot(c, q)];
+                        jy += kCy[q] * f[m_lattice.postSlot(c, q)];
                     }
                     m_loadX[p] += jx;
                     m_loadY[p] += jy;
@@ -76,7 +75,7 @@ void Coupling::coverNodes() {
         Real cx, cy, r, ux, uy;
         grainGeometry(s.grain, cx, cy, r);
         surfaceVelocity(s.grain, s.iu + m_originX - cx, s.ju + m_originY - cy, ux, uy);
-        for (int q = 0; q < kQ; ++q) f[q * cells + s.cell] = equilibrium(q, 1.0, ux, uy);
+        for (int q = 0; q < kQ; ++q) f[m_lattice.postSlot(s.cell, q)] = equilibrium(q, 1.0, ux, uy);
     }
 }
 
@@ -84,7 +83,6 @@ void Coupling::refillUncovered() {
     // Refill (e.g. Peng et al. 2016): equilibrium at the mean density of the fluid neighbours and
     // the velocity of the surface that just left the node; the grain pays that momentum.
     Real* f = m_lattice.populations().data();
-    const long long cells = m_lattice.cells();
     const std::size_t n = m_dem.particles().size();
     for (const Cover& c : m_oldCover) {
         if (m_owner[c.cell] != kJustUncovered) continue;
@@ -110,7 +108,7 @@ void Coupling::refillUncovered() {
             m_loadY[c.grain] -= rho * uy;
             m_loadT[c.grain] -= rho * (dx * uy - dy * ux);
         }
-        for (int q = 0; q < kQ; ++q) f[q * cells + c.cell] = equilibrium(q, rho, ux, uy);
+        for (int q = 0; q < kQ; ++q) f[m_lattice.postSlot(c.cell, q)] = equilibrium(q, rho, ux, uy);
         m_solid[c.cell] = 0;
     }
     for (const Cover& c : m_oldCover)
@@ -158,32 +156,31 @@ void Coupling::applyLinks() {
     // term of Lallemand & Luo 2003), with f_out leaving fluid node x_f along c (into the grain):
     //   q <  1/2: f_in(x_f) = 2q f_out(x_f) + (1 - 2q) f_out(x_f - c) + 6 w rho c_in.u_w
     //   q >= 1/2: f_in(x_f) = f_out/(2q) + (2q - 1)/(2q) f_in^post(x_f) + 3 w rho c_in.u_w / q
-    // u_w = u_p + omega x r at the wall point x_f + q c. The value is stored in the solid node's
-    // slot that x_f pulls from. Momentum exchange, Galilean invariant (Wen et al. 2014):
+    // u_w = u_p + omega x r at the wall point x_f + q c. The value is stored where the next step
+    // reads the population arriving at x_f along c_in (Lattice::inSlot). Momentum exchange, Galilean invariant (Wen et al. 2014):
     //   dP = (c - u_w) f_out - (c_in - u_w) f_in.
     Real* f = m_lattice.populations().data();
-    const long long cells = m_lattice.cells(), count = static_cast<long long>(m_links.size());
+    const long long count = static_cast<long long>(m_links.size());
     m_linkLoad.resize(3 * m_links.size());
     Real* dp = m_linkLoad.data();
-    // Each link writes its own solid slot (pulled by exactly one fluid node): no conflicts.
+    // Each link writes its own incoming slot (one per fluid node and direction): no conflicts.
 #pragma omp parallel for schedule(static) if (count > kParallelMin)
     for (long long k = 0; k < count; ++k) {
         const Link& l = m_links[k];
         const int d = l.dir, in = kOpposite[d];
-        const Real out = f[d * cells + l.fluid];
-        Real rho = 0;
-        for (int q = 0; q < kQ; ++q) rho += f[q * cells + l.fluid];
+        const Real out = f[m_lattice.postSlot(l.fluid, d)];
+        const Real rho = m_lattice.density(l.fluid);
         Real ux, uy;
         surfaceVelocity(l.grain, l.rx, l.ry, ux, uy);
         const Real moving = 6.0 * kW[in] * rho * (kCx[in] * ux + kCy[in] * uy);
         Real value;
         if (l.q < 0.5 && l.behind >= 0)
-            value = 2 * l.q * out + (1 - 2 * l.q) * f[d * cells + l.behind] + moving;
+            value = 2 * l.q * out + (1 - 2 * l.q) * f[m_lattice.postSlot(l.behind, d)] + moving;
         else if (l.q < 0.5)
             value = out + moving;
         else
-            value = (out + (2 * l.q - 1) * f[in * cells + l.fluid] + moving) / (2 * l.q);
-        f[in * cells + l.solid] = value;
+            value = (out + (2 * l.q - 1) * f[m_lattice.postSlot(l.fluid, in)] + moving) / (2 * l.q);
+        f[m_lattice.inSlot(l.fluid, in)] = value;
         const Real dpx = kCx[d] * (out + value) - ux * (out - value);
         const Real dpy = kCy[d] * (out + value) - uy * (out - value);
         dp[3 * k] = dpx;

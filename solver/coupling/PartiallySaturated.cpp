@@ -37,7 +37,6 @@ void Coupling::mapPsm() {
                 if (eps <= 0) continue;
                 const long long c = wrapCell(iu, ju);
                 if (c < 0 || !m_lattice.isFluid(c)) continue;
-                if (m_solid[c] == 0) m_psmCells.push_back(c);
                 m_solid[c] += eps;
                 m_psm.push_back({c, static_cast<std::int32_t>(p), eps, px - cx, py - cy});
             }
@@ -46,16 +45,27 @@ void Coupling::mapPsm() {
     std::sort(m_psm.begin(), m_psm.end(), [](const PsmEntry& a, const PsmEntry& b) {
         return a.cell != b.cell ? a.cell < b.cell : a.grain < b.grain;
     });
+    // One group of entries per cell, in cell order; the lattice records what streams into
+    // these cells during the next step, and collidePsm() re-collides them from that.
+    m_psmCells.clear();
+    m_linkStart.clear();
+    for (std::size_t k = 0; k < m_psm.size(); ++k)
+        if (k == 0 || m_psm[k].cell != m_psm[k - 1].cell) {
+            m_psmCells.push_back(m_psm[k].cell);
+            m_linkStart.push_back(static_cast<long long>(k));
+        }
+    m_linkStart.push_back(static_cast<long long>(m_psm.size()));
+    m_lattice.setRecordedCells(m_psmCells);
 }
 
 namespace {
 
 /// Everything the solid collision of one cell needs besides the cell's entries.
 struct PsmContext {
-    const Real* prev;  // populations the bulk kernel pulled from
-    Real* next;        // post-collision populations written by the bulk kernel
-    long long cells;
-    int nx, ny;
+    const lattice::Lattice* lattice;
+    const Real* incoming; // per cell group: the kQ populations the step streamed into the cell
+    Real* f;              // the lattice's populations (post-collision slots overwritten)
+    int nx;
     Real fx, fy;       // lattice body force (Guo), part of the fluid velocity
     Real tauMinusHalf;
     bool ntWeight;
@@ -76,20 +86,16 @@ inline Real psmWeight(const PsmContext& ctx, Real eps) {
 ///   Omega^s_i = [f_-i - f_-i^eq(rho, u)] - [f_i - f_i^eq(rho, u_p)]   (NT 1998),
 ///   B = B(eps_total), B_p = B eps_p / sum eps, load on p: -B_p sum_i Omega^s_i c_i.
 template <class C, class Entry, class Surface, class Load>
-static void psmCell(const PsmContext& ctx, const C& collide, const Entry* first, const Entry* last,
-                    const Surface& surface, const Load& addLoad) {
+static void psmCell(const PsmContext& ctx, const C& collide, const Real* incoming, const Entry* first,
+                    const Entry* last, const Surface& surface, const Load& addLoad) {
     const long long cell = first->cell;
-    const int x = static_cast<int>(cell % ctx.nx), y = static_cast<int>(cell / ctx.nx);
+    const int x = static_cast<int>(cell % ctx.nx);
     if ((ctx.zouHeLeft && x == 0) || (ctx.zouHeRight && x == ctx.nx - 1)) {
         for (const Entry* e = first; e != last; ++e) addLoad(e, 0, 0, 0); // Zou-He nodes stay fluid
         return;
     }
     Real f[kQ];
-    for (int q = 0; q < kQ; ++q) {
-        const long long src = static_cast<long long>((y - kCy[q] + ctx.ny) % ctx.ny) * ctx.nx +
-                              (x - kCx[q] + ctx.nx) % ctx.nx;
-        f[q] = ctx.prev[q * ctx.cells + src];
-    }
+    std::copy(incoming, incoming + kQ, f);
     Real rho = 0, jx = 0, jy = 0, sumEps = 0;
     for (int q = 0; q < kQ; ++q) {
         rho += f[q];
@@ -117,15 +123,16 @@ static void psmCell(const PsmContext& ctx, const C& collide, const Entry* first,
         }
         addLoad(e, -px, -py, -(e->rx * py - e->ry * px));
     }
-    for (int q = 0; q < kQ; ++q) ctx.next[q * ctx.cells + cell] = out[q];
+    for (int q = 0; q < kQ; ++q) ctx.f[ctx.lattice->postSlot(cell, q)] = out[q];
 }
 
 void Coupling::collidePsm() {
     using namespace lattice;
     const LatticeSetup& s = m_lattice.setup();
     const CollisionParams& p = s.collision;
-    PsmContext ctx{m_lattice.previousPopulations().data(), m_lattice.populations().data(), m_lattice.cells(),
-                   m_lattice.nx(), m_lattice.ny(), s.fx, s.fy, p.tau - 0.5, m_params.psm_weight == PsmWeight::Nt,
+    const Real* incoming = m_lattice.recordedIncoming().data();
+    PsmContext ctx{&m_lattice, incoming, m_lattice.populations().data(),
+                   m_lattice.nx(), s.fx, s.fy, p.tau - 0.5, m_params.psm_weight == PsmWeight::Nt,
                    s.left.type == SideType::ZouHeVelocity || s.left.type == SideType::ZouHePressure,
                    s.right.type == SideType::ZouHeVelocity || s.right.type == SideType::ZouHePressure};
     auto surface = [this](std::int32_t g, Real rx, Real ry, Real& ux, Real& uy) { surfaceVelocity(g, rx, ry, ux, uy); };
@@ -140,15 +147,12 @@ void Coupling::collidePsm() {
         slots[k + 1] = fy;
         slots[k + 2] = t;
     };
-    m_linkStart.clear();
-    for (std::size_t k = 0; k < m_psm.size(); ++k)
-        if (k == 0 || m_psm[k].cell != m_psm[k - 1].cell) m_linkStart.push_back(static_cast<long long>(k));
-    m_linkStart.push_back(static_cast<long long>(m_psm.size()));
     const long long groups = static_cast<long long>(m_linkStart.size()) - 1;
     auto run = [&](const auto& collide) {
 #pragma omp parallel for schedule(static) if (groups > kParallelMin)
         for (long long g = 0; g < groups; ++g)
-            psmCell(ctx, collide, base + m_linkStart[g], base + m_linkStart[g + 1], surface, addLoad);
+            psmCell(ctx, collide, incoming + g * kQ, base + m_linkStart[g], base + m_linkStart[g + 1], surface,
+                    addLoad);
     };
     // The same operator, parameters and dispatch as Lattice::step, so a cell with B = 0 is unchanged.
     const bool force = s.fx != 0 || s.fy != 0;

@@ -96,11 +96,6 @@ void Lattice::buildSides() {
     }
 }
 
-long long Lattice::neighbour(long long cell, int dir) const {
-    const int i = static_cast<int>(cell % m_nx), j = static_cast<int>(cell / m_nx);
-    return index((i + kCx[dir] + m_nx) % m_nx, (j + kCy[dir] + m_ny) % m_ny);
-}
-
 void Lattice::buildWallLinks() {
     const SideCondition* sides[4] = {&m_setup.left, &m_setup.right, &m_setup.bottom, &m_setup.top};
     for (long long c = 0; c < m_cells; ++c) {
@@ -114,10 +109,13 @@ void Lattice::buildWallLinks() {
                 m_pressureLinks.push_back({c, d, side.rho});
                 continue;
             }
-            CopyLink link{in * m_cells + n, d * m_cells + c, 0.0};
+            // Default: bounce-back, the population leaving c along d returns along in.
+            long long sourceNode = c;
+            int sourceDir = d;
+            Real add = 0;
             if (side.type == SideType::Wall) {
                 // Moving wall (Ladd 1994): f_in = f_out + 6 w_in rho_0 (c_in . u_w), rho_0 = 1.
-                link.add = 6.0 * kW[in] * (kCx[in] * side.ux + kCy[in] * side.uy);
+                add = 6.0 * kW[in] * (kCx[in] * side.ux + kCy[in] * side.uy);
             } else {
                 // Free slip: the incoming population is the mirror image of one leaving a
                 // neighbour along the wall; where that neighbour is not fluid, bounce back.
@@ -126,8 +124,14 @@ void Lattice::buildWallLinks() {
                 const int ci = static_cast<int>(c % m_nx), cj = static_cast<int>(c / m_nx);
                 const long long from = horizontal ? index((ci - kCx[in] + m_nx) % m_nx, cj)
                                                   : index(ci, (cj - kCy[in] + m_ny) % m_ny);
-                if (isFluid(from) && from != c) link.source = mirror * m_cells + from;
+                if (isFluid(from) && from != c) { sourceNode = from; sourceDir = mirror; }
             }
+            CopyLink link{};
+            for (int parity = 0; parity < 2; ++parity) {
+                link.slot[parity] = inSlotAt(c, in, parity);
+                link.source[parity] = postSlotAt(sourceNode, sourceDir, parity);
+            }
+            link.add = add;
             m_copyLinks.push_back(link);
         }
     }
@@ -135,14 +139,14 @@ void Lattice::buildWallLinks() {
 
 Real Lattice::density(long long cell) const {
     Real rho = 0;
-    for (int q = 0; q < kQ; ++q) rho += m_f[q * m_cells + cell];
+    for (int q = 0; q < kQ; ++q) rho += m_f[postSlot(cell, q)];
     return rho;
 }
 
 void Lattice::velocity(long long cell, Real& ux, Real& uy) const {
     Real rho = 0, jx = 0, jy = 0;
     for (int q = 0; q < kQ; ++q) {
-        const Real v = m_f[q * m_cells + cell];
+        const Real v = m_f[postSlot(cell, q)];
         rho += v;
         jx += kCx[q] * v;
         jy += kCy[q] * v;
@@ -158,12 +162,13 @@ Real Lattice::totalMass() const {
     return mass;
 }
 
-void Lattice::resetSolids(std::vector<Real>& f) const {
+void Lattice::resetSolids() {
     // Solid nodes are collided by the branch-free bulk kernel too; resetting them to rest keeps
     // their (unused) values finite. Only the slots the link pass writes are ever read.
+    Real* f = m_f.data();
 #pragma omp parallel for schedule(static) if (m_cells >= kParallelMinCells)
     for (std::size_t k = 0; k < m_solids.size(); ++k)
-        for (int q = 0; q < kQ; ++q) f[q * m_cells + m_solids[k]] = kW[q];
+        for (int q = 0; q < kQ; ++q) f[postSlot(m_solids[k], q)] = kW[q];
 }
 
 } // namespace lbdem::solver::lattice

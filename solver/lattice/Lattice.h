@@ -43,9 +43,15 @@ struct ObstacleLoad {
     Real fx = 0, fy = 0, torque = 0;
 };
 
-/// D2Q9 lattice with structure-of-arrays storage f[q * cells + cell] (x fastest) on two buffers.
-/// Solid nodes (ghost layers, obstacles) hold the populations that bounce back into the fluid:
-/// a boundary pass writes them before the bulk kernel, so the kernel itself has no branches.
+/// D2Q9 lattice with structure-of-arrays storage f[q * cells + cell] (x fastest) in ONE buffer,
+/// updated in place by the AA pattern (Bailey et al. 2009): a step from an even step count
+/// reads and writes only the node's own nine values (storing f*_i in slot opp(i)); a step from
+/// an odd count reads the populations arriving from the neighbours and writes the results back
+/// where they came from. Both move 144 bytes per update with no write-allocate traffic and half
+/// the memory of a two-lattice scheme. Where a population sits therefore depends on the parity
+/// of the step count: postSlot() and inSlot() say where; nothing outside the lattice may index
+/// populations() directly. Boundary passes write the populations that solid neighbours send
+/// into the fluid before the bulk kernel, so the kernel itself has no branches.
 class Lattice {
 public:
     /// Build the lattice at rest (rho = 1, u = 0) with its ghost layers and wall links.
@@ -82,6 +88,17 @@ public:
     /// Set the step counter (checkpoint restore; populations are restored through populations()).
     void setStepCount(long long step) { m_step = step; }
 
+    /// Index in populations() of the post-collision population f*_dir of `cell` after the last step.
+    long long postSlot(long long cell, int dir) const { return postSlotAt(cell, dir, m_step & 1); }
+    /// Index in populations() that the next step reads as the population arriving at `cell`
+    /// along `dir` (sent from cell - c_dir): boundary passes write solid neighbours' values here.
+    long long inSlot(long long cell, int dir) const { return inSlotAt(cell, dir, m_step & 1); }
+    /// Record, in every following step, the incoming (streamed, pre-collision) populations of
+    /// these cells after the boundary passes: partially saturated cells re-collide from them.
+    void setRecordedCells(const std::vector<long long>& cells) { m_recordedCells.assign(cells.begin(), cells.end()); }
+    /// The incoming populations recorded in the last step, kQ per recorded cell in the given order.
+    const std::vector<Real>& recordedIncoming() const { return m_recorded; }
+
     /// Density of a node (from the current post-collision populations).
     Real density(long long cell) const;
     /// Velocity of a node, u = (sum c_i f_i - F/2) / rho for post-collision populations.
@@ -90,19 +107,16 @@ public:
     Real totalMass() const;
     /// Load on obstacle `owner` from the last step.
     const ObstacleLoad& obstacleLoad(int owner) const { return m_loads.at(owner); }
-    /// Current populations, f[q * cells + cell].
+    /// The population array (layout per postSlot/inSlot; saved and restored with stepCount()).
     const std::vector<Real>& populations() const { return m_f; }
     std::vector<Real>& populations() { return m_f; }
-    /// Populations the last step streamed from (post-collision of the step before, boundary slots
-    /// filled): what the kernel pulled. Partially saturated cells re-collide from these.
-    const std::vector<Real>& previousPopulations() const { return m_g; }
     /// Number of boundary links of each kind (copy, pressure, obstacle).
     std::size_t linkCount() const { return m_copyLinks.size() + m_pressureLinks.size() + m_obstacleLinks.size(); }
 
     static constexpr std::uint8_t kFluid = 0, kSolid = 1, kPressureGhost = 2, kObstacle = 3;
 
 private:
-    struct CopyLink { long long slot, source; Real add; };           // f[slot] = f[source] + add
+    struct CopyLink { long long slot[2], source[2]; Real add; };     // f[slot] = f[source] + add, per parity
     struct PressureLink { long long node; int dir; Real rho; };       // dir: into the ghost
     struct ObstacleLink { long long node; int dir; Real q; int owner; bool interior; };
     struct Owner { Real cx, cy; };
@@ -110,18 +124,36 @@ private:
     void buildSides();
     void buildWallLinks();
     void rebuildLinks();
-    long long neighbour(long long cell, int dir) const;
+    /// postSlot() when the step count has the given parity (0 even, 1 odd).
+    long long postSlotAt(long long cell, int dir, long long parity) const {
+        return parity ? kOpposite[dir] * m_cells + cell : dir * m_cells + neighbour(cell, dir);
+    }
+    /// inSlot() when the step count has the given parity.
+    long long inSlotAt(long long cell, int dir, long long parity) const {
+        return parity ? kOpposite[dir] * m_cells + neighbour(cell, kOpposite[dir]) : dir * m_cells + cell;
+    }
+    /// The node at cell + c_dir, wrapping around the domain.
+    long long neighbour(long long cell, int dir) const {
+        const int i = static_cast<int>(cell % m_nx), j = static_cast<int>(cell / m_nx);
+        int in = i + kCx[dir], jn = j + kCy[dir];
+        in = in < 0 ? in + m_nx : in >= m_nx ? in - m_nx : in;
+        jn = jn < 0 ? jn + m_ny : jn >= m_ny ? jn - m_ny : jn;
+        return index(in, jn);
+    }
     void applyLinks();
     void computeLoads();
+    void applyZouHe();
+    void recordIncoming();
     template <class C> void runStep(const C& collide);
-    void resetSolids(std::vector<Real>& f) const;
+    void resetSolids();
 
     LatticeSetup m_setup;
     int m_nx = 0, m_ny = 0, m_ghostLeft = 0, m_ghostBottom = 0;
     Real m_offsetX = 0.5, m_offsetY = 0.5;
     long long m_cells = 0, m_step = 0;
-    std::vector<Real> m_f, m_g;               // current (post-collision) and next populations
-    std::vector<Real> m_rowScratch;           // one row of results per thread (bulk kernel)
+    std::vector<Real> m_f;                    // populations, in place (AA pattern)
+    std::vector<long long> m_recordedCells;   // cells whose incoming populations each step records
+    std::vector<Real> m_recorded;             // kQ per recorded cell
     std::vector<std::uint8_t> m_flags;
     std::vector<int> m_side;                  // for ghost nodes: which side (0 L, 1 R, 2 B, 3 T)
     std::vector<CopyLink> m_copyLinks;
@@ -142,9 +174,8 @@ void Lattice::initialise(const Field& field) {
             const long long c = index(i, j);
             Real rho = 1, ux = 0, uy = 0;
             if (isFluid(c)) field(nodeX(i), nodeY(j), rho, ux, uy);
-            for (int q = 0; q < kQ; ++q) m_f[q * m_cells + c] = equilibrium(q, rho, ux, uy);
+            for (int q = 0; q < kQ; ++q) m_f[postSlot(c, q)] = equilibrium(q, rho, ux, uy);
         }
-    m_g = m_f;
 }
 
 } // namespace lbdem::solver::lattice

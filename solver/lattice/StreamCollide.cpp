@@ -1,88 +1,85 @@
-// The time step: boundary link pass, fused pull stream-collide kernel, Zou-He nodes.
+// The time step: boundary passes, then the fused stream-collide kernel of the AA pattern.
 #include "solver/lattice/Lattice.h"
 
-#include <cstdint>
 #include <utility>
-
-#if defined(__AVX512F__)
-#include <immintrin.h>
-#endif
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace lbdem::solver::lattice {
 
 namespace {
 
-/// Lattices whose two population sets exceed this stay in memory anyway; below it (a few
-/// tens of MB, the size of a server's last-level cache) plain stores keep them in cache.
-constexpr double kStreamingMinBytes = 64.0 * (1 << 20);
-
-/// Copy n values to dst; with `streaming`, whole 64-byte lines go out as streaming stores.
-/// The destination is not read again this step, so skipping the read-for-ownership
-/// (write-allocate) of the two-lattice scheme saves 72 of its 216 bytes of memory traffic per
-/// update. Only full lines are streamed: partial-line streaming stores were measured 30x slower.
-inline void writeRow(Real* __restrict dst, const Real* __restrict src, int n, bool streaming) {
-    if (!streaming) {
-        for (int k = 0; k < n; ++k) dst[k] = src[k];
-        return;
+/// AA step from an even step count: every node reads its own nine values (the populations that
+/// arrived, f_i in slot i), collides, and stores f*_i in its own slot opp(i).
+/// Pre: the boundary passes have filled the slots that solid neighbours send into the fluid.
+template <class C>
+void collideInPlace(Real* __restrict f, int nx, int ny, long long cells, const C& collide) {
+#pragma omp parallel for schedule(static) if (cells >= kParallelMinCells)
+    for (int y = 0; y < ny; ++y) {
+        const long long row = static_cast<long long>(y) * nx;
+        Real* __restrict p0 = f + row;
+        Real* __restrict p1 = f + cells + row;
+        Real* __restrict p2 = f + 2 * cells + row;
+        Real* __restrict p3 = f + 3 * cells + row;
+        Real* __restrict p4 = f + 4 * cells + row;
+        Real* __restrict p5 = f + 5 * cells + row;
+        Real* __restrict p6 = f + 6 * cells + row;
+        Real* __restrict p7 = f + 7 * cells + row;
+        Real* __restrict p8 = f + 8 * cells + row;
+        auto node = [&](int x) __attribute__((always_inline)) {
+            Real g[9] = {p0[x], p1[x], p2[x], p3[x], p4[x], p5[x], p6[x], p7[x], p8[x]};
+            collide(g);
+            p0[x] = g[0];
+            p3[x] = g[1];
+            p4[x] = g[2];
+            p1[x] = g[3];
+            p2[x] = g[4];
+            p7[x] = g[5];
+            p8[x] = g[6];
+            p5[x] = g[7];
+            p6[x] = g[8];
+        };
+        // Each node touches only its own values, so the loop carries no dependence.
+#pragma omp simd
+        for (int x = 0; x < nx; ++x) node(x);
     }
-#if defined(__AVX512F__)
-    int k = 0;
-    while (k < n && reinterpret_cast<std::uintptr_t>(dst + k) % 64 != 0) { dst[k] = src[k]; ++k; }
-    for (; k + 8 <= n; k += 8) _mm512_stream_pd(dst + k, _mm512_loadu_pd(src + k));
-    for (; k < n; ++k) dst[k] = src[k];
-#else
-    for (int k = 0; k < n; ++k) dst[k] = src[k];
-#endif
 }
 
-/// Fused pull stream-collide over all rows: dst(x) = collide(src(x - c_i)), periodic wrap.
-/// Pre: src holds post-collision populations of step t with the link slots of solid nodes
-/// filled; post: dst holds the post-collision populations of step t + 1 at every node.
-/// Loads are contiguous per direction and row (x fastest); the inner loop has no branches
-/// and writes one row of results to a per-thread buffer (cache resident), which writeRow
-/// then streams to memory.
+/// AA step from an odd step count: node x finds the population arriving along c_i in slot
+/// opp(i) of x - c_i (where the neighbour left it), collides, and writes f*_i to slot i of
+/// x + c_i. The nine values read and written are the same nine, owned by x alone, so the update
+/// is in place and free of races between nodes, rows and threads. Periodic wrap on all sides.
 template <class C>
-void bulkKernel(const Real* __restrict src, Real* __restrict dst, int nx, int ny, long long cells,
-                const C& collide, std::vector<Real>& scratch) {
-    const bool streaming = 2.0 * 9 * sizeof(Real) * static_cast<double>(cells) > kStreamingMinBytes;
-#pragma omp parallel if (cells >= kParallelMinCells)
-    {
-#ifdef _OPENMP
-        Real* __restrict buffer = scratch.data() + static_cast<std::size_t>(omp_get_thread_num()) * 9 * nx;
-#else
-        Real* __restrict buffer = scratch.data();
-#endif
-#pragma omp for schedule(static)
-        for (int y = 0; y < ny; ++y) {
-            const long long row = static_cast<long long>(y) * nx;
-            const long long rowS = static_cast<long long>((y + 1) % ny) * nx;      // pulls with cy = -1
-            const long long rowN = static_cast<long long>((y - 1 + ny) % ny) * nx; // pulls with cy = +1
-            const Real* __restrict s0 = src + row;
-            const Real* __restrict s1 = src + cells + row;
-            const Real* __restrict s2 = src + 2 * cells + rowN;
-            const Real* __restrict s3 = src + 3 * cells + row;
-            const Real* __restrict s4 = src + 4 * cells + rowS;
-            const Real* __restrict s5 = src + 5 * cells + rowN;
-            const Real* __restrict s6 = src + 6 * cells + rowN;
-            const Real* __restrict s7 = src + 7 * cells + rowS;
-            const Real* __restrict s8 = src + 8 * cells + rowS;
-            auto node = [&](int x, int xm, int xp) {
-                Real f[9] = {s0[x], s1[xm], s2[x], s3[xp], s4[x], s5[xm], s6[xp], s7[xp], s8[xm]};
-                collide(f);
-                for (int q = 0; q < 9; ++q) buffer[q * nx + x] = f[q];
-            };
-            node(0, nx - 1, 1 % nx);
+void streamCollideInPlace(Real* __restrict f, int nx, int ny, long long cells, const C& collide) {
+#pragma omp parallel for schedule(static) if (cells >= kParallelMinCells)
+    for (int y = 0; y < ny; ++y) {
+        const long long row = static_cast<long long>(y) * nx;
+        const long long rowN = static_cast<long long>(y + 1 == ny ? 0 : y + 1) * nx;
+        const long long rowS = static_cast<long long>(y == 0 ? ny - 1 : y - 1) * nx;
+        Real* __restrict p0 = f + row;              // slot i of x + c_i, by direction i
+        Real* __restrict p1 = f + cells + row;
+        Real* __restrict p2 = f + 2 * cells + rowN;
+        Real* __restrict p3 = f + 3 * cells + row;
+        Real* __restrict p4 = f + 4 * cells + rowS;
+        Real* __restrict p5 = f + 5 * cells + rowN;
+        Real* __restrict p6 = f + 6 * cells + rowN;
+        Real* __restrict p7 = f + 7 * cells + rowS;
+        Real* __restrict p8 = f + 8 * cells + rowS;
+        auto node = [&](int x, int xm, int xp) __attribute__((always_inline)) {
+            Real g[9] = {p0[x], p3[xm], p4[x], p1[xp], p2[x], p7[xm], p8[xp], p5[xp], p6[xm]};
+            collide(g);
+            p0[x] = g[0];
+            p1[xp] = g[1];
+            p2[x] = g[2];
+            p3[xm] = g[3];
+            p4[x] = g[4];
+            p5[xp] = g[5];
+            p6[xm] = g[6];
+            p7[xm] = g[7];
+            p8[xp] = g[8];
+        };
+        node(0, nx - 1, 1 % nx);
 #pragma omp simd
-            for (int x = 1; x < nx - 1; ++x) node(x, x - 1, x + 1);
-            if (nx > 1) node(nx - 1, nx - 2, 0);
-            for (int q = 0; q < 9; ++q) writeRow(dst + q * cells + row, buffer + q * nx, nx, streaming);
-        }
-#if defined(__AVX512F__)
-        _mm_sfence(); // streaming stores are weakly ordered: publish them before the barrier
-#endif
+        for (int x = 1; x < nx - 1; ++x) node(x, x - 1, x + 1);
+        if (nx > 1) node(nx - 1, nx - 2, 0);
     }
 }
 
@@ -90,10 +87,11 @@ void bulkKernel(const Real* __restrict src, Real* __restrict dst, int nx, int ny
 
 void Lattice::applyLinks() {
     Real* f = m_f.data();
-    const long long cells = m_cells;
+    const long long parity = m_step & 1;
     const auto& copies = m_copyLinks;
-#pragma omp parallel for schedule(static) if (cells >= kParallelMinCells)
-    for (std::size_t k = 0; k < copies.size(); ++k) f[copies[k].slot] = f[copies[k].source] + copies[k].add;
+#pragma omp parallel for schedule(static) if (m_cells >= kParallelMinCells)
+    for (std::size_t k = 0; k < copies.size(); ++k)
+        f[copies[k].slot[parity]] = f[copies[k].source[parity]] + copies[k].add;
     // Constant pressure (anti-bounce-back, Ginzburg et al. 2008): f_in = -f_out + 2 f_in^eq,sym(rho_b, u).
     for (const auto& link : m_pressureLinks) {
         Real ux, uy;
@@ -101,20 +99,20 @@ void Lattice::applyLinks() {
         const int in = kOpposite[link.dir];
         const Real cu = kCx[in] * ux + kCy[in] * uy;
         const Real sym = kW[in] * link.rho * (1.0 + 4.5 * cu * cu - 1.5 * (ux * ux + uy * uy));
-        f[in * cells + neighbour(link.node, link.dir)] = -f[link.dir * cells + link.node] + 2.0 * sym;
+        f[inSlot(link.node, in)] = -f[postSlot(link.node, link.dir)] + 2.0 * sym;
     }
     // Interpolated bounce-back, Bouzidi, Firdaouss & Lallemand (2001), linear two-branch form.
     for (const auto& link : m_obstacleLinks) {
         const int d = link.dir, in = kOpposite[d];
-        const Real out = f[d * cells + link.node];
+        const Real out = f[postSlot(link.node, d)];
         Real value;
         if (link.q < 0.5 && link.interior)
-            value = 2 * link.q * out + (1 - 2 * link.q) * f[d * cells + neighbour(link.node, in)];
+            value = 2 * link.q * out + (1 - 2 * link.q) * f[postSlot(neighbour(link.node, in), d)];
         else if (link.q < 0.5)
             value = out;
         else
-            value = out / (2 * link.q) + (2 * link.q - 1) / (2 * link.q) * f[in * cells + link.node];
-        f[in * cells + neighbour(link.node, d)] = value;
+            value = out / (2 * link.q) + (2 * link.q - 1) / (2 * link.q) * f[postSlot(link.node, in)];
+        f[inSlot(link.node, in)] = value;
     }
 }
 
@@ -124,7 +122,7 @@ void Lattice::computeLoads() {
     for (const auto& link : m_obstacleLinks) {
         // Momentum exchange (Ladd 1994): the wall receives (f_out + f_in) c_out per link.
         const int d = link.dir;
-        const Real push = f[d * m_cells + link.node] + f[kOpposite[d] * m_cells + neighbour(link.node, d)];
+        const Real push = f[postSlot(link.node, d)] + f[inSlot(link.node, kOpposite[d])];
         const Real dfx = push * kCx[d], dfy = push * kCy[d];
         const int i = static_cast<int>(link.node % m_nx), j = static_cast<int>(link.node / m_nx);
         const Real rx = nodeX(i) + link.q * kCx[d] - m_owners[link.owner].cx;
@@ -136,35 +134,23 @@ void Lattice::computeLoads() {
     }
 }
 
-template <class C>
-void Lattice::runStep(const C& collide) {
-    applyLinks();
-    if (!m_obstacleLinks.empty()) computeLoads();
-#ifdef _OPENMP
-    const std::size_t scratch = static_cast<std::size_t>(omp_get_max_threads()) * kQ * m_nx;
-#else
-    const std::size_t scratch = static_cast<std::size_t>(kQ) * m_nx;
-#endif
-    if (m_rowScratch.size() < scratch) m_rowScratch.resize(scratch); // only when threads grow
-    bulkKernel(m_f.data(), m_g.data(), m_nx, m_ny, m_cells, collide, m_rowScratch);
+void Lattice::applyZouHe() {
     // Zou & He (1997): the populations entering from outside follow from the known ones, the
-    // imposed velocity (or density) and bounce-back of the non-equilibrium normal part.
+    // imposed velocity (or density) and bounce-back of the non-equilibrium normal part. They are
+    // written where the kernel will read them, and the kernel collides the node as any other.
     const SideCondition* sides[2] = {&m_setup.left, &m_setup.right};
     for (int s = 0; s < 2; ++s) {
-        const auto& cellsOfSide = m_zouHeCells[s];
         const SideCondition& side = *sides[s];
         const Real sign = s == 0 ? 1.0 : -1.0; // inward normal along x
-        for (long long c : cellsOfSide) {
-            const int x = static_cast<int>(c % m_nx), y = static_cast<int>(c / m_nx);
-            Real f[9];
-            for (int q = 0; q < kQ; ++q)
-                f[q] = m_f[q * m_cells + index((x - kCx[q] + m_nx) % m_nx, (y - kCy[q] + m_ny) % m_ny)];
+        for (long long c : m_zouHeCells[s]) {
+            Real f[kQ];
+            for (int q = 0; q < kQ; ++q) f[q] = m_f[inSlot(c, q)];
             // Known: rest, N, S and the three leaving the domain (W, NW, SW on the left).
             const int out = s == 0 ? 3 : 1, outN = s == 0 ? 6 : 5, outS = s == 0 ? 7 : 8;
             const Real tangential = f[0] + f[2] + f[4], leaving = f[out] + f[outN] + f[outS];
             Real rho, un; // un: velocity along the inward normal
             if (side.type == SideType::ZouHeVelocity) {
-                const int row = y - m_ghostBottom;
+                const int row = static_cast<int>(c / m_nx) - m_ghostBottom;
                 const Real ux = side.profile.empty() ? side.ux : side.profile.at(row);
                 un = sign * ux;
                 rho = (tangential + 2 * leaving) / (1 - un);
@@ -173,16 +159,29 @@ void Lattice::runStep(const C& collide) {
                 un = 1 - (tangential + 2 * leaving) / rho;
             }
             const int in = kOpposite[out], inN = kOpposite[outS], inS = kOpposite[outN];
-            f[in] = f[out] + 2.0 / 3.0 * rho * un;
-            f[inN] = f[outS] - 0.5 * (f[2] - f[4]) + rho * un / 6.0;
-            f[inS] = f[outN] + 0.5 * (f[2] - f[4]) + rho * un / 6.0;
-            collide(f);
-            for (int q = 0; q < kQ; ++q) m_g[q * m_cells + c] = f[q];
+            m_f[inSlot(c, in)] = f[out] + 2.0 / 3.0 * rho * un;
+            m_f[inSlot(c, inN)] = f[outS] - 0.5 * (f[2] - f[4]) + rho * un / 6.0;
+            m_f[inSlot(c, inS)] = f[outN] + 0.5 * (f[2] - f[4]) + rho * un / 6.0;
         }
     }
-    resetSolids(m_g);
-    std::swap(m_f, m_g);
+}
+
+void Lattice::recordIncoming() {
+    m_recorded.resize(m_recordedCells.size() * kQ); // keeps its capacity between steps
+    for (std::size_t k = 0; k < m_recordedCells.size(); ++k)
+        for (int q = 0; q < kQ; ++q) m_recorded[k * kQ + q] = m_f[inSlot(m_recordedCells[k], q)];
+}
+
+template <class C>
+void Lattice::runStep(const C& collide) {
+    applyLinks();
+    if (!m_obstacleLinks.empty()) computeLoads();
+    applyZouHe();
+    recordIncoming();
+    if (m_step & 1) streamCollideInPlace(m_f.data(), m_nx, m_ny, m_cells, collide);
+    else collideInPlace(m_f.data(), m_nx, m_ny, m_cells, collide);
     ++m_step;
+    resetSolids();
 }
 
 void Lattice::step() {

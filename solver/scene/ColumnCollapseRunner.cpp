@@ -7,8 +7,10 @@
 #include "solver/scene/ColumnScene.h"
 #include "solver/scene/ColumnState.h"
 #include "solver/scene/FluidFields.h"
+#include "solver/scene/LatticeState.h"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace lbdem::solver {
@@ -113,6 +115,7 @@ public:
             snapshot.fluid.emplace();
             const LatticeScales scales{m_plan.nx, m_plan.ny, m_plan.h_m, m_plan.dt_s, m_spec.fluid.density_kg_m3};
             fillFluidSnapshot(*m_lattice, scales, downsample, &m_coupling->solidFraction(), *snapshot.fluid);
+            snapshot.probes["pore_pressure_failure_plane"] = failurePlaneProbe();
         }
     }
 
@@ -140,8 +143,7 @@ public:
     void save(StateArchive& archive) const override {
         saveColumnState(m_column, archive);
         if (!m_lattice) return;
-        archive.reals["lattice/f"] = m_lattice->populations();
-        archive.integers["lattice/step"] = {m_lattice->stepCount()};
+        saveLatticeState(*m_lattice, archive);
         const auto state = m_coupling->state();
         archive.integers["coupling/cells"].assign(state.cells.begin(), state.cells.end());
         archive.integers["coupling/grains"].assign(state.grains.begin(), state.grains.end());
@@ -152,11 +154,7 @@ public:
     void restore(const StateArchive& archive) override {
         restoreColumnState(archive, m_column);
         if (!m_lattice) return;
-        const auto& f = archive.real("lattice/f");
-        if (f.size() != m_lattice->populations().size())
-            throw std::runtime_error("the checkpoint's lattice does not match the case's plan");
-        m_lattice->populations() = f;
-        m_lattice->setStepCount(archive.integer("lattice/step").at(0));
+        restoreLatticeState(archive, *m_lattice);
         coupling::CouplingState state;
         const auto& cells = archive.integer("coupling/cells");
         const auto& grains = archive.integer("coupling/grains");
@@ -182,23 +180,40 @@ private:
         return force / m_params.front_length_m;
     }
 
-    /// Mean excess pore pressure along the failure plane of the initial column [Pa].
-    double failurePlanePressure() const {
+    /// Excess pore pressure [Pa] at kProbePoints points along the failure plane of the initial
+    /// column: from the gate's foot up the slope at kFailurePlaneDeg until it meets the back wall
+    /// or the column's top; NaN where the point's node is not fluid or lies inside a grain (solid
+    /// fraction of at least one half: a covered node's density is not a pore pressure).
+    SnapshotProbe failurePlaneProbe() const {
         const double angle = kFailurePlaneDeg * kPi / 180;
         const double width = m_column.initialWidth(), height = m_column.initialHeight();
         const double length = std::min(width / std::cos(angle), height / std::sin(angle));
         const double scale = m_spec.fluid.density_kg_m3 * lattice::kCs2 * std::pow(m_plan.h_m / m_plan.dt_s, 2);
-        double sum = 0;
-        int samples = 0;
+        SnapshotProbe probe;
+        probe.quantity = "excess_pore_pressure_pa";
         for (int k = 0; k < kProbePoints; ++k) {
             const double s = (k + 0.5) / kProbePoints * length;
-            const int i = m_lattice->firstFluidX() + static_cast<int>((width - s * std::cos(angle)) / m_plan.h_m);
-            const int j = m_lattice->firstFluidY() + static_cast<int>(s * std::sin(angle) / m_plan.h_m);
+            const double x = width - s * std::cos(angle), y = s * std::sin(angle);
+            const int i = m_lattice->firstFluidX() + static_cast<int>(x / m_plan.h_m);
+            const int j = m_lattice->firstFluidY() + static_cast<int>(y / m_plan.h_m);
             const long long cell = m_lattice->index(i, j);
-            if (!m_lattice->isFluid(cell)) continue;
-            sum += (m_lattice->density(cell) - 1.0) * scale;
-            ++samples;
+            probe.s.push_back(s);
+            probe.x.push_back(x);
+            probe.y.push_back(y);
+            const bool inFluid = m_lattice->isFluid(cell) && m_coupling->solidFraction()[cell] < 0.5;
+            probe.value.push_back(inFluid ? (m_lattice->density(cell) - 1.0) * scale
+                                          : std::numeric_limits<double>::quiet_NaN());
         }
+        return probe;
+    }
+
+    /// Mean excess pore pressure over the points of the failure-plane probe in the fluid [Pa].
+    double failurePlanePressure() const {
+        const SnapshotProbe probe = failurePlaneProbe();
+        double sum = 0;
+        int samples = 0;
+        for (const double value : probe.value)
+            if (!std::isnan(value)) sum += value, ++samples;
         return samples ? sum / samples : 0.0;
     }
 

@@ -42,7 +42,8 @@ public:
     /// Named SI quantities of the current state: mass, max Mach and the scene's own
     /// (poiseuille: l2_error; taylor_green: decay_rate_1_s, decay_rate_error; cavity:
     /// ghia_max_deviation at Re = 100; cylinder: drag_coefficient, lift_coefficient,
-    /// pressure_drop_pa).
+    /// pressure_drop_pa), with NAME_reference where an analytic or published value applies;
+    /// the full list is declared in SceneMetrics.h.
     std::map<std::string, double> metrics() const;
 
     /// Lattice velocity at the domain point (x, y) in lattice units, bilinear between nodes.

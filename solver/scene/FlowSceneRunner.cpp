@@ -2,6 +2,7 @@
 #include "solver/scene/FlowSceneRunner.h"
 
 #include "solver/scene/FlowScene.h"
+#include "solver/scene/LatticeState.h"
 
 namespace lbdem::solver {
 
@@ -28,19 +29,9 @@ public:
         for (const auto& [name, value] : m_scene.metrics()) metrics[name] = value;
     }
 
-    void save(StateArchive& archive) const override {
-        archive.reals["lattice/f"] = m_scene.lattice().populations();
-        archive.integers["lattice/step"] = {m_scene.lattice().stepCount()};
-    }
+    void save(StateArchive& archive) const override { saveLatticeState(m_scene.lattice(), archive); }
 
-    void restore(const StateArchive& archive) override {
-        auto& f = m_scene.lattice().populations();
-        const auto& saved = archive.real("lattice/f");
-        if (saved.size() != f.size())
-            throw std::runtime_error("the checkpoint's lattice does not match the case's plan");
-        f = saved;
-        m_scene.lattice().setStepCount(archive.integer("lattice/step").at(0));
-    }
+    void restore(const StateArchive& archive) override { restoreLatticeState(archive, m_scene.lattice()); }
 
 private:
     FlowScene m_scene;

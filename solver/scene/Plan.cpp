@@ -123,8 +123,9 @@ Plan makePlan(const CaseSpec& spec) {
 
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
     const std::size_t bytesPerValue = spec.fluid.storage == "float" ? 4 : 8;
-    // Two distribution sets, one flag byte and one solid fraction per node; ~256 B per grain.
-    plan.memory_bytes = static_cast<std::size_t>(nodes) * (2 * kQ * bytesPerValue + 1 + 8) +
+    // One distribution set (updated in place), one flag byte, a side index and one solid
+    // fraction per node; the coupling's owner map; ~256 B per grain.
+    plan.memory_bytes = static_cast<std::size_t>(nodes) * (kQ * bytesPerValue + 1 + 4 + 8 + 4) +
                         static_cast<std::size_t>(plan.grains) * 256;
     const double demSteps = static_cast<double>(plan.steps) * plan.substeps;
     plan.estimated_run_s = static_cast<double>(plan.steps) * nodes / kAssumedLatticeUpdatesPerS +

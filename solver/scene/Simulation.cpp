@@ -35,13 +35,13 @@ bool Simulation::finished() const {
 SnapshotPtr Simulation::snapshot() const {
     auto snapshot = std::make_shared<Snapshot>();
     snapshot->case_name = m_spec.name;
-    snapshot->step = m_state->step;
     snapshot->time_s = time();
     snapshot->tc_s = m_plan.tc_s;
     snapshot->domain_width_m = m_spec.domain.width_m;
     snapshot->domain_height_m = m_spec.domain.height_m;
     snapshot->slope_deg = m_spec.domain.slope_deg;
     m_state->runner->fillSnapshot(*snapshot, std::max(1, m_spec.output.fluid_downsample));
+    snapshot->step = m_state->step; // the simulation's step, whatever count the scene keeps
     snapshot->metrics = metrics();
     return snapshot;
 }

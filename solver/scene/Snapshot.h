@@ -46,6 +46,15 @@ struct SnapshotWall {
     float x0, y0, x1, y1;
 };
 
+/// Samples of one quantity along a probe line (e.g. excess pore pressure along the failure plane).
+struct SnapshotProbe {
+    std::string quantity;             ///< column name with its SI unit, e.g. excess_pore_pressure_pa
+    std::vector<double> s;            ///< distance along the line from its start [m]
+    std::vector<double> x, y;         ///< position of each sample [m]
+    std::vector<double> value;        ///< the quantity; NaN where the point is not in the fluid
+    std::size_t size() const { return s.size(); }
+};
+
 /// Everything consumers may look at; never points into live solver memory.
 struct Snapshot {
     std::string case_name;
@@ -60,6 +69,7 @@ struct Snapshot {
     std::vector<SnapshotWall> walls;
     std::vector<std::pair<float, float>> outline; ///< flow-front outline polyline [m]
     std::map<std::string, double> metrics;        ///< timeseries.csv columns at this time
+    std::map<std::string, SnapshotProbe> probes;  ///< probe lines by name (submerged scenes)
 
     double timeOverTc() const { return tc_s > 0 ? time_s / tc_s : 0.0; }
 };

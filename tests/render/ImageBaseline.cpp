@@ -8,10 +8,33 @@
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <set>
 
 namespace lbdem::support {
+
+namespace {
+
+/// True when LBDEM_UPDATE_BASELINES=1 asks to rewrite failing or missing baselines.
+bool updatingBaselines() {
+    const char* value = std::getenv("LBDEM_UPDATE_BASELINES");
+    return value && std::strcmp(value, "1") == 0;
+}
+
+/// Writes `actual` as the new baseline and reports it as passed.
+BaselineResult rewriteBaseline(vtkImageData* actual, const std::string& baselinePath,
+                               double error) {
+    vis::writePng(actual, baselinePath);
+    BaselineResult result;
+    result.passed = true;
+    result.error = error;
+    result.message = "LBDEM_UPDATE_BASELINES=1: wrote " + baselinePath;
+    return result;
+}
+
+} // namespace
 
 vtkSmartPointer<vtkImageData> readPng(const std::string& path) {
     if (!std::filesystem::exists(path)) return nullptr;
@@ -42,6 +65,7 @@ BaselineResult compareWithBaseline(vtkImageData* actual, const std::string& name
     const std::string actualPath = outDir + "/" + name + ".png";
     BaselineResult result;
     const auto baseline = readPng(baselinePath);
+    if (!baseline && updatingBaselines()) return rewriteBaseline(actual, baselinePath, 0.0);
     if (!baseline) {
         vis::writePng(actual, actualPath);
         result.message = "no baseline " + baselinePath + "; look at " + actualPath +
@@ -57,6 +81,8 @@ BaselineResult compareWithBaseline(vtkImageData* actual, const std::string& name
     difference->Update();
     result.error = difference->GetThresholdedError();
     result.passed = a[0] == b[0] && a[1] == b[1] && result.error <= tolerance;
+    if (!result.passed && updatingBaselines())
+        return rewriteBaseline(actual, baselinePath, result.error);
     if (!result.passed) {
         vis::writePng(actual, actualPath);
         const std::string diffPath = outDir + "/" + name + ".diff.png";

@@ -18,7 +18,9 @@ struct BaselineResult {
 
 /// Compares `actual` with tests/baselines/`name`.png using vtkImageDifference; above `tolerance`
 /// (or without a baseline) the actual image and the difference image are written to
-/// BUILD/Testing/Temporary/`name`.png and `name`.diff.png.
+/// BUILD/Testing/Temporary/`name`.png and `name`.diff.png. With the environment variable
+/// LBDEM_UPDATE_BASELINES=1 a failing or missing baseline is overwritten with `actual` instead
+/// and the comparison passes (look at the new image before committing it).
 BaselineResult compareWithBaseline(vtkImageData* actual, const std::string& name, double tolerance);
 
 /// Reads a PNG file (RGB or RGBA) into an image; null when it cannot be read.

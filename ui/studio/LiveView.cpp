@@ -73,6 +73,10 @@ void LiveView::showSnapshot(const solver::SnapshotPtr& snapshot) {
 
 const vis::LayerSet& LiveView::layers() const { return m_impl->scene.layers(); }
 
+const vis::ColorRange& LiveView::fluidColorRange() const { return m_impl->scene.fluidColorRange(); }
+
+const vis::ColorRange& LiveView::grainColorRange() const { return m_impl->scene.grainColorRange(); }
+
 void LiveView::setLayers(const vis::LayerSet& layers) {
     m_impl->scene.setLayers(layers);
     redraw();
@@ -98,6 +102,7 @@ void LiveView::redraw() {
     m_impl->scene.update(*m_snapshot);
     if (m_impl->cameraMoved) camera->DeepCopy(m_impl->userCamera);
     m_impl->widget->renderWindow()->Render();
+    emit colorRangesShown(m_impl->scene.fluidColorRange(), m_impl->scene.grainColorRange());
 }
 
 QImage LiveView::grabImage() { return m_impl->widget->grabFramebuffer(); }

@@ -30,6 +30,10 @@ public:
     const solver::SnapshotPtr& snapshot() const { return m_snapshot; }
     /// The layer choice in effect.
     const vis::LayerSet& layers() const;
+    /// The range the fluid colours spanned in the last frame drawn (fitted or fixed).
+    const vis::ColorRange& fluidColorRange() const;
+    /// The range the grain colours spanned in the last frame drawn (fitted or fixed).
+    const vis::ColorRange& grainColorRange() const;
     /// The rendered scene as an image (renders first).
     QImage grabImage();
     /// The OpenGL widget the scene is drawn in.
@@ -38,7 +42,7 @@ public:
     std::pair<double, double> worldAt(int x, int y) const;
 
 public slots:
-    /// Choose the visible layers and colourings; redraws the current snapshot.
+    /// Choose the visible layers, colourings and colour ranges; redraws the current snapshot.
     void setLayers(const lbdem::vis::LayerSet& layers);
     /// Draw only force chains above factor x the mean normal force (0: all).
     void setChainThreshold(double factor);
@@ -48,6 +52,8 @@ public slots:
 signals:
     /// One line describing what lies under the cursor.
     void probed(const QString& text);
+    /// A frame was drawn with these fluid and grain colour ranges (fitted or fixed).
+    void colorRangesShown(const lbdem::vis::ColorRange& fluid, const lbdem::vis::ColorRange& grain);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

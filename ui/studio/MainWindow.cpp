@@ -11,6 +11,7 @@
 #include "ui/studio/RunStatusBar.h"
 #include "ui/studio/SimulationController.h"
 #include "ui/studio/ViewControls.h"
+#include "ui/studio/ViewSettings.h"
 #include "ui/vis/VtkRunWriter.h"
 
 #include <QAction>
@@ -30,15 +31,14 @@ namespace lbdem::studio {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_controller(new SimulationController(this)),
-      m_editor(new CaseEditor), m_view(new LiveView), m_plots(new LivePlots),
-      m_status(new RunStatusBar) {
+      m_editor(new CaseEditor), m_view(new LiveView), m_controls(new ViewControls),
+      m_plots(new LivePlots), m_status(new RunStatusBar) {
     setWindowTitle(tr("lbdem studio"));
-    auto* controls = new ViewControls;
     auto* viewPane = new QWidget;
     auto* viewLayout = new QVBoxLayout(viewPane);
     viewLayout->setContentsMargins(0, 0, 0, 0);
     viewLayout->setSpacing(0);
-    viewLayout->addWidget(controls);
+    viewLayout->addWidget(m_controls);
     viewLayout->addWidget(m_view, 1);
     auto* splitter = new QSplitter(Qt::Vertical);
     splitter->setObjectName("viewPlotSplitter");
@@ -58,16 +58,17 @@ MainWindow::MainWindow(QWidget* parent)
     createActions();
     createMenus();
     connectController();
-    connect(controls, &ViewControls::layersChanged, m_view, &LiveView::setLayers);
-    connect(controls, &ViewControls::resetCameraRequested, m_view, &LiveView::resetCamera);
-    connect(controls, &ViewControls::chainThresholdChanged, m_view, &LiveView::setChainThreshold);
+    connect(m_controls, &ViewControls::layersChanged, m_view, &LiveView::setLayers);
+    connect(m_controls, &ViewControls::resetCameraRequested, m_view, &LiveView::resetCamera);
+    connect(m_controls, &ViewControls::chainThresholdChanged, m_view, &LiveView::setChainThreshold);
+    connect(m_view, &LiveView::colorRangesShown, m_controls, &ViewControls::showColorRanges);
     connect(m_view, &LiveView::probed, m_status, &RunStatusBar::setProbe);
     connect(m_editor, &CaseEditor::caseEdited, this, [this] {
         m_caseChangedSinceLoad = true;
         updateActions();
     });
     restoreSettings();
-    controls->setLayers(m_view->layers());
+    m_controls->setLayers(m_view->layers());
     updateActions();
 }
 
@@ -294,21 +295,14 @@ void MainWindow::restoreSettings() {
     QSettings settings;
     if (!restoreGeometry(settings.value("window/geometry").toByteArray())) resize(1400, 900);
     restoreState(settings.value("window/state").toByteArray());
-    const QString layers = settings.value("view/layers").toString();
-    vis::LayerSet set = m_view->layers();
-    try {
-        if (!layers.isEmpty()) set = vis::parseLayerSet(layers.toStdString());
-    } catch (const std::exception&) {
-        // A settings file from another version: keep the default layers.
-    }
-    m_view->setLayers(set);
+    m_view->setLayers(loadViewSettings(settings, m_view->layers()));
 }
 
 void MainWindow::saveSettings() const {
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
-    settings.setValue("view/layers", QString::fromStdString(vis::layerSetToString(m_view->layers())));
+    saveViewSettings(settings, m_view->layers());
 }
 
 } // namespace lbdem::studio

@@ -23,9 +23,11 @@ class LivePlots;
 class LiveView;
 class RunStatusBar;
 class SimulationController;
+class ViewControls;
 
 /// Wires widgets to the SimulationController; behaviour lives in the parts it assembles.
-/// Settings (geometry, dock layout, recent files, layer choices) persist through QSettings.
+/// Settings (geometry, dock layout, recent files, layers, colourings and colour ranges) persist
+/// through QSettings.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
@@ -41,6 +43,7 @@ public:
     SimulationController& controller() { return *m_controller; }
     CaseEditor& caseEditor() { return *m_editor; }
     LiveView& liveView() { return *m_view; }
+    ViewControls& viewControls() { return *m_controls; }
     LivePlots& livePlots() { return *m_plots; }
     RunStatusBar& runStatus() { return *m_status; }
     QAction* runAction() const { return m_run; }
@@ -78,6 +81,7 @@ private:
     SimulationController* m_controller;
     CaseEditor* m_editor;
     LiveView* m_view;
+    ViewControls* m_controls;
     LivePlots* m_plots;
     RunStatusBar* m_status;
     QAction *m_open = nullptr, *m_save = nullptr, *m_quit = nullptr;

@@ -81,6 +81,8 @@ void FluidLayer::addTo(vtkRenderer* renderer) {
 
 void FluidLayer::setField(FluidField field) { m_field = field; }
 
+void FluidLayer::setRange(const ColorRange& range) { m_range = range; }
+
 void FluidLayer::setVisible(bool visible) {
     m_visible = visible;
     applyVisibility();
@@ -103,12 +105,16 @@ void FluidLayer::update(const solver::Snapshot& snapshot) {
     if (!m_hasData) return;
     m_image->ShallowCopy(fluidToVtk(*snapshot.fluid));
     const char* name = arrayName(m_field);
-    double range[2] = {0.0, 0.0};
-    m_image->GetPointData()->GetArray(name)->GetRange(range);
     const bool signedField = m_field != FluidField::Speed;
-    double low = signedField ? -std::max(std::abs(range[0]), std::abs(range[1])) : 0.0;
-    double high = signedField ? -low : range[1];
-    if (high - low <= 0) high = low + 1e-12; // a flat field still needs a valid range
+    double low = m_range.min, high = m_range.max;
+    if (!m_range.fixed) {
+        double range[2] = {0.0, 0.0};
+        m_image->GetPointData()->GetArray(name)->GetRange(range);
+        low = signedField ? -std::max(std::abs(range[0]), std::abs(range[1])) : 0.0;
+        high = signedField ? -low : range[1];
+    }
+    if (!(high - low > 0)) high = low + 1e-12; // a flat field still needs a valid range
+    m_shown = {m_range.fixed, low, high};
     vtkLookupTable* table = signedField ? m_diverging.Get() : m_sequential.Get();
     table->SetTableRange(low, high);
     m_image->GetPointData()->SetActiveScalars(name); // vtkImageMapToColors maps the active scalars

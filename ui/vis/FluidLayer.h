@@ -31,10 +31,16 @@ public:
     void addTo(vtkRenderer* renderer);
     /// Chooses the field shown from the next update on.
     void setField(FluidField field);
+    /// Fixes the colour range (and the contour levels) or lets update() fit it, from the next
+    /// update on.
+    void setRange(const ColorRange& range);
     /// Shows or hides the layer; a snapshot without fluid hides it regardless.
     void setVisible(bool visible);
-    /// Takes the fluid fields of `snapshot` (colour range: 0..max for speed, symmetric otherwise).
+    /// Takes the fluid fields of `snapshot` (automatic colour range: 0..max for speed,
+    /// symmetric about zero otherwise).
     void update(const solver::Snapshot& snapshot);
+    /// The range the colours spanned at the last update (`fixed` as set).
+    const ColorRange& shownRange() const { return m_shown; }
     /// The colour bar, for the view to place; null while the layer is hidden.
     vtkScalarBarActor* colorBar() const;
 
@@ -42,6 +48,7 @@ private:
     void applyVisibility();
 
     FluidField m_field = FluidField::Speed;
+    ColorRange m_range, m_shown;
     bool m_visible = true;
     bool m_hasData = false;
     vtkSmartPointer<vtkImageData> m_image;

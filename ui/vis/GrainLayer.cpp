@@ -71,6 +71,8 @@ void GrainLayer::addTo(vtkRenderer* renderer) {
 
 void GrainLayer::setColoring(GrainColoring coloring) { m_coloring = coloring; }
 
+void GrainLayer::setRange(const ColorRange& range) { m_range = range; }
+
 void GrainLayer::setVisible(bool visible) {
     m_visible = visible;
     applyVisibility();
@@ -104,12 +106,18 @@ void GrainLayer::update(const solver::Snapshot& snapshot) {
     m_points->ShallowCopy(particlesToVtk(snapshot));
     const bool byForce = m_coloring == GrainColoring::ContactForce;
     const char* name = byForce ? "contact_force" : "speed";
-    double range[2];
-    m_points->GetPointData()->GetArray(name)->GetRange(range);
-    const double high = range[1] > 0 ? range[1] : 1e-12; // all at rest still needs a range
-    m_table->SetTableRange(0.0, high);
+    double low = m_range.min, high = m_range.max;
+    if (!m_range.fixed) {
+        double range[2];
+        m_points->GetPointData()->GetArray(name)->GetRange(range);
+        low = 0.0;
+        high = range[1];
+    }
+    if (!(high - low > 0)) high = low + 1e-12; // all at rest still needs a range
+    m_shown = {m_range.fixed, low, high};
+    m_table->SetTableRange(low, high);
     m_discMapper->SelectColorArray(name);
-    m_discMapper->SetScalarRange(0.0, high);
+    m_discMapper->SetScalarRange(low, high);
     m_bar->SetTitle(byForce ? "contact force [N/m]" : "grain speed [m/s]");
     m_points->Modified();
 }

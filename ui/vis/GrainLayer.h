@@ -26,10 +26,15 @@ public:
     void addTo(vtkRenderer* renderer);
     /// Chooses the colouring from the next update on.
     void setColoring(GrainColoring coloring);
+    /// Fixes the colour range or lets update() fit it, from the next update on.
+    void setRange(const ColorRange& range);
     /// Shows or hides the layer.
     void setVisible(bool visible);
-    /// Takes the grains of `snapshot`; the colour range is 0..max of the chosen quantity.
+    /// Takes the grains of `snapshot`; the automatic colour range is 0..max of the chosen
+    /// quantity.
     void update(const solver::Snapshot& snapshot);
+    /// The range the colours spanned at the last update (`fixed` as set).
+    const ColorRange& shownRange() const { return m_shown; }
     /// The colour bar, for the view to place; null while hidden or empty.
     vtkScalarBarActor* colorBar() const;
     /// Draws the dark disc rims (the view turns them off when discs are only a few pixels wide).
@@ -41,6 +46,7 @@ private:
     void applyVisibility();
 
     GrainColoring m_coloring = GrainColoring::Speed;
+    ColorRange m_range, m_shown;
     bool m_visible = true;
     bool m_hasData = false;
     bool m_rimsVisible = true;

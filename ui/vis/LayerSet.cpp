@@ -69,4 +69,17 @@ GrainColoring parseGrainColoring(const std::string& text) {
     throw solver::InputError(unknownWord("grain colouring", text, {"speed", "force"}));
 }
 
+std::string fluidFieldName(FluidField field) {
+    switch (field) {
+    case FluidField::Pressure: return "pressure";
+    case FluidField::Vorticity: return "vorticity";
+    case FluidField::Speed: break;
+    }
+    return "speed";
+}
+
+std::string grainColoringName(GrainColoring coloring) {
+    return coloring == GrainColoring::ContactForce ? "force" : "speed";
+}
+
 } // namespace lbdem::vis

@@ -19,6 +19,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
@@ -51,13 +52,26 @@ vtkSmartPointer<vtkTable> curveTable(const std::string& name, const std::vector<
     return table;
 }
 
-/// Adds one line plot of `table` to `chart` in palette colour `index`.
-vtkPlot* addLine(vtkChartXY* chart, vtkTable* table, std::size_t index, float width) {
-    vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
+/// The vtkPen line type of a line style.
+int penLineType(LineStyle style) {
+    switch (style) {
+    case LineStyle::Dashed: return vtkPen::DASH_LINE;
+    case LineStyle::Dotted: return vtkPen::DOT_LINE;
+    case LineStyle::DashDotted: return vtkPen::DASH_DOT_LINE;
+    case LineStyle::Solid: break;
+    }
+    return vtkPen::SOLID_LINE;
+}
+
+/// Adds one plot of `table` to `chart` in palette colour `index` and the given style: a line, or
+/// a point (vtkChart::POINTS) when the table has one row, as VTK cannot draw a one-point line.
+vtkPlot* addLine(vtkChartXY* chart, vtkTable* table, std::size_t index, float width, LineStyle style) {
+    vtkPlot* plot = chart->AddPlot(table->GetNumberOfRows() < 2 ? vtkChart::POINTS : vtkChart::LINE);
     plot->SetInputData(table, 0, 1);
     const auto* rgb = kPalette[index % (sizeof kPalette / sizeof kPalette[0])];
     plot->SetColor(rgb[0], rgb[1], rgb[2], 255);
     plot->SetWidth(width);
+    if (style != LineStyle::Solid) plot->GetPen()->SetLineType(penLineType(style));
     return plot;
 }
 
@@ -82,9 +96,13 @@ void addPlots(const ChartSpec& spec, vtkChartXY* chart) {
     dataRange(spec, range);
     for (std::size_t k = 0; k < spec.series.size(); ++k) {
         const auto& s = spec.series[k];
-        vtkPlot* plot = addLine(chart, curveTable(s.name, s.x, s.y), k, 2.0f);
-        if (auto* points = vtkPlotPoints::SafeDownCast(plot); points && s.markers)
-            points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+        const std::size_t colour = s.colour >= 0 ? static_cast<std::size_t>(s.colour) : k;
+        vtkPlot* plot = addLine(chart, curveTable(s.name, s.x, s.y), colour, 2.0f, s.style);
+        // Markers differ with the line style too, so that styles stay apart where no line is drawn.
+        const int markers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
+                               vtkPlotPoints::CROSS};
+        if (auto* points = vtkPlotPoints::SafeDownCast(plot); points && (s.markers || s.x.size() < 2))
+            points->SetMarkerStyle(markers[static_cast<int>(s.style)]);
     }
     for (const auto& r : spec.references) {
         const std::vector<double> xs = r.horizontal ? std::vector<double>{range[0], range[1]} : std::vector<double>{r.value, r.value};
@@ -97,20 +115,70 @@ void addPlots(const ChartSpec& spec, vtkChartXY* chart) {
     }
 }
 
+/// A logarithmic axis over [low, high] (both positive), with margins below and above given as
+/// fractions of the decades spanned (at least half a decade, so that one point still shows).
+void setLogRange(vtkAxis* axis, double low, double high, double below, double above) {
+    const double decades = std::max(std::log10(high / low), 0.5);
+    axis->SetLogScale(true);
+    axis->SetBehavior(vtkAxis::FIXED);
+    axis->SetUnscaledRange(low * std::pow(10.0, -below * decades), high * std::pow(10.0, above * decades));
+}
+
 /// Fixed axis ranges with a margin, so end points and markers are not cut by the frame and the
-/// top-right legend does not cover the highest curve; a range that starts at 0 keeps 0.
+/// legend at the top does not cover the highest curve; a range that starts at 0 keeps 0.
 void fitAxes(const ChartSpec& spec, vtkChartXY* chart) {
     double range[4];
     dataRange(spec, range);
     bool markers = false;
     for (const auto& s : spec.series) markers = markers || s.markers;
-    const double dx = std::max(range[1] - range[0], 1e-12), dy = std::max(range[3] - range[2], 1e-12);
-    const double x0 = markers ? range[0] - 0.04 * dx : range[0], x1 = markers ? range[1] + 0.04 * dx : range[1];
-    const double y0 = range[2] == 0 ? 0.0 : range[2] - 0.05 * dy, y1 = range[3] + 0.2 * dy;
+    const double dy = std::max(range[3] - range[2], 1e-12);
+    // A single x value (e.g. a sweep of one slope) still gets an axis: 10 % or 0.5 either side.
+    const double xPad = range[1] > range[0] ? (markers ? 0.04 * (range[1] - range[0]) : 0.0)
+                                            : std::max(0.1 * std::abs(range[0]), 0.5);
+    const double x0 = range[0] - xPad, x1 = range[1] + xPad;
+    // Head room for the legend: 20 % of the range, more when it lists many curves.
+    const std::size_t entries = spec.legend ? spec.series.size() + spec.references.size() : 0;
+    const double headRoom = std::max(0.2, 0.045 * static_cast<double>(entries));
+    const double y0 = range[2] == 0 ? 0.0 : range[2] - 0.05 * dy, y1 = range[3] + headRoom * dy;
     for (const auto& [axis, low, high] : {std::tuple{vtkAxis::BOTTOM, x0, x1}, std::tuple{vtkAxis::LEFT, y0, y1}}) {
         chart->GetAxis(axis)->SetBehavior(vtkAxis::FIXED);
         chart->GetAxis(axis)->SetRange(low, high);
     }
+    bool labelled = false;
+    for (const auto& s : spec.series) labelled = labelled || !s.labels.empty();
+    if (spec.logX) // labels sit right of their points: room for the last one
+        setLogRange(chart->GetAxis(vtkAxis::BOTTOM), range[0], range[1], 0.05, labelled ? 0.2 : 0.05);
+    if (spec.logY) setLogRange(chart->GetAxis(vtkAxis::LEFT), range[2], range[3], 0.05, headRoom);
+}
+
+/// The screen coordinate of value along axis (coordinate 0: x, 1: y) once the chart is laid out.
+double screenPosition(vtkAxis* axis, double value, int coordinate) {
+    const float* from = axis->GetPoint1();
+    const float* to = axis->GetPoint2();
+    const double t = axis->GetLogScaleActive()
+                         ? std::log10(value / axis->GetUnscaledMinimum()) /
+                               std::log10(axis->GetUnscaledMaximum() / axis->GetUnscaledMinimum())
+                         : (value - axis->GetMinimum()) / (axis->GetMaximum() - axis->GetMinimum());
+    return from[coordinate] + t * (to[coordinate] - from[coordinate]);
+}
+
+/// Text actors beside the labelled points of `spec` (call after a first render has laid out the
+/// axes); returns whether any label was added.
+bool addPointLabels(const ChartSpec& spec, vtkChartXY* chart, vtkRenderer* renderer) {
+    bool added = false;
+    for (const auto& s : spec.series)
+        for (std::size_t k = 0; k < s.labels.size(); ++k) {
+            const double x = screenPosition(chart->GetAxis(vtkAxis::BOTTOM), s.x[k], 0);
+            const double y = screenPosition(chart->GetAxis(vtkAxis::LEFT), s.y[k], 1);
+            vtkNew<vtkTextActor> text;
+            text->SetInput(s.labels[k].c_str());
+            text->GetTextProperty()->SetFontSize(12);
+            text->GetTextProperty()->SetColor(0.15, 0.15, 0.15);
+            text->SetDisplayPosition(static_cast<int>(x) + 7, static_cast<int>(y) + 4);
+            renderer->AddActor2D(text);
+            added = true;
+        }
+    return added;
 }
 
 } // namespace
@@ -121,8 +189,18 @@ void renderLineChart(const ChartSpec& spec, const std::string& path, int width, 
         if (s.x.size() != s.y.size())
             throw std::invalid_argument("chart series '" + s.name + "' has " + std::to_string(s.x.size()) +
                                         " x values but " + std::to_string(s.y.size()) + " y values");
+        if (!s.labels.empty() && s.labels.size() != s.x.size())
+            throw std::invalid_argument("chart series '" + s.name + "' has " + std::to_string(s.labels.size()) +
+                                        " labels for " + std::to_string(s.x.size()) + " points");
+        for (std::size_t k = 0; k < s.x.size(); ++k)
+            if ((spec.logX && !(s.x[k] > 0)) || (spec.logY && !(s.y[k] > 0)))
+                throw std::invalid_argument("chart series '" + s.name + "' has a value that is not positive on a "
+                                            "logarithmic axis");
         points += s.x.size();
     }
+    for (const auto& r : spec.references)
+        if ((r.horizontal ? spec.logY : spec.logX) && !(r.value > 0))
+            throw std::invalid_argument("reference line '" + r.name + "' is not positive on a logarithmic axis");
     if (points == 0) throw std::invalid_argument("chart '" + spec.title + "' has no points");
     ensureDisplay();
     vtkNew<vtkContextView> view;
@@ -147,11 +225,12 @@ void renderLineChart(const ChartSpec& spec, const std::string& path, int width, 
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(spec.yTitle);
     chart->SetShowLegend(spec.legend);
     chart->GetLegend()->SetInline(true);
-    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetHorizontalAlignment(spec.legendAtLeft ? vtkChartLegend::LEFT : vtkChartLegend::RIGHT);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
     addPlots(spec, chart);
     fitAxes(spec, chart);
     view->GetRenderWindow()->Render();
+    if (addPointLabels(spec, chart, view->GetRenderer())) view->GetRenderWindow()->Render();
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(view->GetRenderWindow());
     grab->SetInputBufferTypeToRGB();
@@ -178,11 +257,11 @@ ChartSpec froudeChart(std::vector<ChartSeries> series) {
     return spec;
 }
 
-ChartSpec runoutVsSlopeChart(std::vector<ChartSeries> series) {
+ChartSpec runoutVsSlopeChart(std::vector<ChartSeries> series, const std::string& yTitle) {
     ChartSpec spec;
     spec.title = "Final runout against slope";
     spec.xTitle = "slope [deg]";
-    spec.yTitle = "final runout [m]";
+    spec.yTitle = yTitle;
     for (auto& s : series) s.markers = true;
     spec.series = std::move(series);
     return spec;

@@ -98,13 +98,19 @@ vtkRenderer* SceneView::renderer() const { return m_renderer; }
 void SceneView::setLayers(const LayerSet& layers) {
     m_layers = layers;
     m_fluid->setField(layers.fluidField);
+    m_fluid->setRange(layers.fluidRange());
     m_fluid->setVisible(layers.fluid);
     m_grains->setColoring(layers.grainColoring);
+    m_grains->setRange(layers.grainRange());
     m_grains->setVisible(layers.grains);
     m_chains->setVisible(layers.chains);
     m_outline->setVisible(layers.outline);
     m_streamlines->setVisible(layers.streamlines);
 }
+
+const ColorRange& SceneView::fluidColorRange() const { return m_fluid->shownRange(); }
+
+const ColorRange& SceneView::grainColorRange() const { return m_grains->shownRange(); }
 
 void SceneView::update(const solver::Snapshot& snapshot) {
     sceneBounds(snapshot, m_domain);

@@ -36,7 +36,7 @@ public:
 
     /// The renderer to add to a render window.
     vtkRenderer* renderer() const;
-    /// Chooses visible layers and colourings; takes effect at the next update().
+    /// Chooses visible layers, colourings and colour ranges; takes effect at the next update().
     void setLayers(const LayerSet& layers);
     /// The current layer choice.
     const LayerSet& layers() const { return m_layers; }
@@ -46,6 +46,10 @@ public:
     /// Lays out the camera, colour bars and label for a window of `width` x `height` pixels
     /// (update() does this for the window it renders into; the GUI calls it after a resize).
     void resize(int width, int height);
+    /// The range the fluid colours (and colour bar) spanned at the last update.
+    const ColorRange& fluidColorRange() const;
+    /// The range the grain colours (and colour bar) spanned at the last update.
+    const ColorRange& grainColorRange() const;
     /// The force-chain layer (threshold setting, drawn count).
     ForceChainLayer& forceChains() { return *m_chains; }
     /// The streamline layer (traced line count).

@@ -1,0 +1,19 @@
+// The figure of a study: error against wall time on log-log axes, one labelled point per setting.
+#pragma once
+
+#include "app/cli/StudyReport.h"
+
+#include <string>
+#include <vector>
+
+namespace lbdem::cli {
+
+/// True when this build can draw study.png (built with VTK, LBDEM_GUI=ON).
+bool studyPlotAvailable();
+
+/// Draw the error of each row against its wall time into the PNG file path; returns false (and
+/// draws nothing) without VTK or when no row has a positive error and wall time.
+bool writeStudyPlot(const StudySpec& study, const std::vector<StudyRow>& rows,
+                    const std::string& path);
+
+} // namespace lbdem::cli

@@ -1,0 +1,229 @@
+// Sweep figures from each case's timeseries.csv, drawn with the vis line charts.
+#include "app/cli/SweepFigures.h"
+
+#include "solver/io/TimeSeriesWriter.h"
+
+#ifdef LBDEM_HAS_VIS
+#include "ui/vis/LineChart.h"
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <set>
+#include <tuple>
+
+namespace lbdem::cli {
+
+std::string packingName(double packing) {
+    return packing >= 0.81 ? "dense" : "loose";
+}
+
+#ifdef LBDEM_HAS_VIS
+namespace {
+
+constexpr int kWidth = 900, kHeight = 600;
+
+/// One finished case with its time series.
+struct CaseCurves {
+    const SweepFigureCase* run = nullptr;
+    io::TimeSeriesTable table;
+};
+
+/// One number formatted with a printf pattern.
+std::string format(const char* pattern, double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, pattern, value);
+    return buffer;
+}
+
+/// A slope as legends show it, e.g. "2.5 deg".
+std::string slopeText(double slopeDeg) {
+    return format("%g deg", slopeDeg);
+}
+
+/// The curve y(t/tau_c) of one column of a case, rows with a missing value left out.
+vis::ChartSeries curve(const CaseCurves& c, const std::string& column, std::string name) {
+    vis::ChartSeries series;
+    series.name = std::move(name);
+    const auto t = c.table.column("t_over_tc"), y = c.table.column(column);
+    for (std::size_t k = 0; k < std::min(t.size(), y.size()); ++k)
+        if (std::isfinite(t[k]) && std::isfinite(y[k]))
+            series.x.push_back(t[k]), series.y.push_back(y[k]);
+    return series;
+}
+
+/// Figure labels of the packings present: "dense", "loose", or with the value when two
+/// packings would share a name. Keyed by the packing rounded to two decimals.
+std::map<std::string, std::string> packingLabels(const std::vector<CaseCurves>& cases) {
+    std::map<std::string, std::string> labels;
+    std::map<std::string, int> uses;
+    for (const auto& c : cases)
+        labels[format("%.2f", c.run->packing)] = packingName(c.run->packing);
+    for (const auto& [key, label] : labels)
+        ++uses[label];
+    for (auto& [key, label] : labels)
+        if (uses[label] > 1) {
+            std::string digits = key;
+            std::replace(digits.begin(), digits.end(), '.', 'p');
+            label += "_" + digits;
+        }
+    return labels;
+}
+
+/// Palette index of each slope present, in increasing slope.
+std::map<double, int> slopeColours(const std::vector<CaseCurves>& cases) {
+    std::set<double> slopes;
+    for (const auto& c : cases)
+        slopes.insert(c.run->slope_deg);
+    std::map<double, int> colours;
+    for (const double slope : slopes)
+        colours.emplace(slope, static_cast<int>(colours.size()));
+    return colours;
+}
+
+/// Renders a chart into out/file, leaving out curves without points (a case that lacks the
+/// column) and charts with no curve at all; appends the file to result.
+void draw(vis::ChartSpec spec, const std::filesystem::path& out, const std::string& file,
+          SweepFiguresResult& result) {
+    spec.series.erase(std::remove_if(spec.series.begin(), spec.series.end(),
+                                     [](const vis::ChartSeries& s) { return s.x.empty(); }),
+                      spec.series.end());
+    if (spec.series.empty()) return;
+    vis::renderLineChart(spec, (out / file).string(), kWidth, kHeight);
+    result.files.push_back((out / file).string());
+}
+
+/// Runout and E_k/E_p0 against t/tau_c for the cases of one packing.
+void drawPackingFigures(const std::string& sweepName, const std::string& packing,
+                        const std::string& label, const std::vector<const CaseCurves*>& cases,
+                        const std::map<double, int>& colours, const std::filesystem::path& out,
+                        SweepFiguresResult& result) {
+    std::vector<vis::ChartSeries> runout, energy;
+    for (const auto* c : cases) {
+        const std::string name = std::string(c->run->submerged ? "submerged" : "dry") + ", " +
+                                 slopeText(c->run->slope_deg);
+        for (auto [series, column] :
+             {std::pair{&runout, "runout_normalised"}, std::pair{&energy, "ke_over_ep0"}}) {
+            series->push_back(curve(*c, column, name));
+            series->back().colour = colours.at(c->run->slope_deg);
+            series->back().style =
+                c->run->submerged ? vis::LineStyle::Dashed : vis::LineStyle::Solid;
+        }
+    }
+    const std::string title = ", " + packingName(std::stod(packing)) + " packing (" + packing + ")";
+    auto runoutSpec =
+        vis::timeSeriesChart(sweepName + ": runout" + title, "(L - L_i) / L_i", runout);
+    runoutSpec.legendAtLeft = true; // runout grows with time: the top-left corner stays free
+    draw(runoutSpec, out, "runout_" + label + ".png", result);
+    draw(vis::timeSeriesChart(sweepName + ": kinetic energy" + title, "E_k / E_p0", energy), out,
+         "energy_" + label + ".png", result);
+}
+
+/// Final runout against slope, one series per packing (densest first, colour) and medium (style).
+void drawRunoutVsSlope(const std::string& sweepName, const std::vector<CaseCurves>& cases,
+                       const std::map<std::string, std::string>& labels,
+                       const std::filesystem::path& out, SweepFiguresResult& result) {
+    std::map<std::pair<std::string, bool>, std::map<double, double>>
+        points; // (packing, wet) -> slope -> runout
+    for (const auto& c : cases)
+        if (std::isfinite(c.run->runout_final))
+            points[{format("%.2f", c.run->packing), c.run->submerged}][c.run->slope_deg] =
+                c.run->runout_final;
+    std::vector<vis::ChartSeries> series;
+    int colour = 0;
+    for (auto it = labels.rbegin(); it != labels.rend(); ++it, ++colour)
+        for (const bool submerged : {false, true}) {
+            const auto found = points.find({it->first, submerged});
+            if (found == points.end()) continue;
+            vis::ChartSeries s;
+            s.name = it->second + ", " + (submerged ? "submerged" : "dry");
+            for (const auto& [slope, runout] : found->second)
+                s.x.push_back(slope), s.y.push_back(runout);
+            s.colour = colour;
+            s.style = submerged ? vis::LineStyle::Dashed : vis::LineStyle::Solid;
+            series.push_back(std::move(s));
+        }
+    auto spec = vis::runoutVsSlopeChart(std::move(series), "final runout (L_f - L_i) / L_i");
+    spec.title = sweepName + ": " + spec.title;
+    spec.legendAtLeft = true;
+    draw(spec, out, "runout_vs_slope.png", result);
+}
+
+/// Densimetric Froude number of the submerged cases against t/tau_c, with Fr = 0.4.
+void drawFroude(const std::string& sweepName, const std::vector<CaseCurves>& cases,
+                const std::map<std::string, std::string>& labels,
+                const std::map<double, int>& colours, const std::filesystem::path& out,
+                SweepFiguresResult& result) {
+    const vis::LineStyle styles[] = {vis::LineStyle::Solid, vis::LineStyle::Dashed,
+                                     vis::LineStyle::Dotted, vis::LineStyle::DashDotted};
+    std::map<std::string, std::size_t> packingStyle; // densest solid, then dashed ...
+    for (auto it = labels.rbegin(); it != labels.rend(); ++it)
+        packingStyle.emplace(it->first, packingStyle.size() % 4);
+    std::vector<vis::ChartSeries> series;
+    for (const auto& c : cases) {
+        if (!c.run->submerged) continue;
+        const std::string key = format("%.2f", c.run->packing);
+        series.push_back(
+            curve(c, "froude_densimetric", labels.at(key) + ", " + slopeText(c.run->slope_deg)));
+        series.back().colour = colours.at(c.run->slope_deg);
+        series.back().style = styles[packingStyle.at(key)];
+    }
+    auto spec = vis::froudeChart(std::move(series));
+    spec.title = sweepName + ": " + spec.title;
+    draw(spec, out, "froude.png", result);
+}
+
+} // namespace
+#endif
+
+SweepFiguresResult writeSweepFigures(const std::string& sweepName,
+                                     const std::vector<SweepFigureCase>& cases,
+                                     const std::filesystem::path& out) {
+    SweepFiguresResult result;
+#ifdef LBDEM_HAS_VIS
+    std::vector<CaseCurves> curves;
+    for (const auto& run : cases) {
+        if (run.status != "finished") {
+            result.skipped.push_back(run.name + " (" + run.status + ")");
+            continue;
+        }
+        try {
+            curves.push_back({&run, io::readTimeSeries((run.dir / "timeseries.csv").string())});
+        } catch (const std::exception&) {
+            result.skipped.push_back(run.name + " (no readable timeseries.csv)");
+        }
+    }
+    if (curves.empty()) {
+        result.unavailable = "no finished case with a timeseries.csv to draw";
+        return result;
+    }
+    const auto labels = packingLabels(curves);
+    const auto colours = slopeColours(curves);
+    // Sorted by slope, dry before submerged, so that legends read in order.
+    std::sort(curves.begin(), curves.end(), [](const CaseCurves& a, const CaseCurves& b) {
+        return std::tie(a.run->slope_deg, a.run->submerged) <
+               std::tie(b.run->slope_deg, b.run->submerged);
+    });
+    try {
+        for (auto it = labels.rbegin(); it != labels.rend(); ++it) { // densest first
+            std::vector<const CaseCurves*> ofPacking;
+            for (const auto& c : curves)
+                if (format("%.2f", c.run->packing) == it->first) ofPacking.push_back(&c);
+            drawPackingFigures(sweepName, it->first, it->second, ofPacking, colours, out, result);
+        }
+        drawRunoutVsSlope(sweepName, curves, labels, out, result);
+        drawFroude(sweepName, curves, labels, colours, out, result);
+    } catch (const std::exception& error) {
+        result.unavailable = std::string("drawing the figures failed: ") + error.what();
+    }
+#else
+    (void)sweepName, (void)cases, (void)out;
+    result.unavailable = "this build has no VTK (configure with LBDEM_GUI=ON to draw the figures)";
+#endif
+    return result;
+}
+
+} // namespace lbdem::cli

@@ -1,0 +1,16 @@
+// Checkpoint state of a lattice: its populations, their layout and the step count.
+#pragma once
+
+#include "solver/core/StateArchive.h"
+#include "solver/lattice/Lattice.h"
+
+namespace lbdem::solver {
+
+/// Save the populations and step count into archive ("lattice/...").
+void saveLatticeState(const lattice::Lattice& lattice, StateArchive& archive);
+
+/// Restore a state saved by saveLatticeState into a lattice built from the same case; throws
+/// std::runtime_error when the sizes or the population layout do not match.
+void restoreLatticeState(const StateArchive& archive, lattice::Lattice& lattice);
+
+} // namespace lbdem::solver
