@@ -143,7 +143,7 @@ void Coupling::restore(const CouplingState& state) {
         const long long c = state.cells[k];
         if (c < 0 || c >= m_lattice.cells()) throw InputError("coupling state does not match the lattice");
         // Wrapped indices serve as unwrapped ones: they are only used to find neighbours.
-        m_cover.push_back({c, state.grains[k], static_cast<int>(c % nx), static_cast<int>(c / nx)});
+        m_cover.push_back({c, state.grains[k], static_cast<int>(c % nx), static_cast<int>(c / nx), true});
         m_owner[c] = state.grains[k];
         m_solid[c] = 1;
     }

@@ -112,7 +112,7 @@ private:
     /// a few thousand nodes of work (and much more when cores are oversubscribed).
     static constexpr long long kParallelMin = 4096;
 
-    struct Cover { long long cell; std::int32_t grain; int iu, ju; };       // covered node, unwrapped
+    struct Cover { long long cell; std::int32_t grain; int iu, ju; bool surface; }; // covered node, unwrapped
     struct Link { long long fluid, solid; std::int32_t grain; int dir; Real q; long long behind; Real rx, ry; };
     struct PsmEntry { long long cell; std::int32_t grain; Real eps, rx, ry; };
 

@@ -52,10 +52,12 @@ void Coupling::coverNodes() {
                 if (c < 0 || !m_lattice.isFluid(c) || m_owner[c] >= 0) continue;
                 if (m_owner[c] == kNone && m_initialised) {
                     // Fluid swallowed by the grain hands its momentum to it.
+                    long long slots[kQ];
+                    m_lattice.postSlots(c, slots);
                     Real jx = 0, jy = 0;
                     for (int q = 1; q < kQ; ++q) {
-                        jx += kCx[q] * f[m_lattice.postSlot(c, q)];
-                        jy += kCy[q] * f[m_lattice.postSlot(c, q)];
+                        jx += kCx[q] * f[slots[q]];
+                        jy += kCy[q] * f[slots[q]];
                     }
                     m_loadX[p] += jx;
                     m_loadY[p] += jy;
@@ -63,7 +65,10 @@ void Coupling::coverNodes() {
                 }
                 m_owner[c] = static_cast<std::int32_t>(p);
                 m_solid[c] = 1;
-                m_cover.push_back({c, static_cast<std::int32_t>(p), iu, ju});
+                // Nodes deeper than sqrt(2) inside have all eight neighbours covered: no links.
+                const Real deep = r - 1.5;
+                const bool surface = deep <= 0 || dx * dx + dy * dy >= deep * deep;
+                m_cover.push_back({c, static_cast<std::int32_t>(p), iu, ju, surface});
             }
     }
     // Solid nodes hold the equilibrium of the surface motion: finite values for the branch-free
@@ -75,7 +80,9 @@ void Coupling::coverNodes() {
         Real cx, cy, r, ux, uy;
         grainGeometry(s.grain, cx, cy, r);
         surfaceVelocity(s.grain, s.iu + m_originX - cx, s.ju + m_originY - cy, ux, uy);
-        for (int q = 0; q < kQ; ++q) f[m_lattice.postSlot(s.cell, q)] = equilibrium(q, 1.0, ux, uy);
+        long long slots[kQ];
+        m_lattice.postSlots(s.cell, slots);
+        for (int q = 0; q < kQ; ++q) f[slots[q]] = equilibrium(q, 1.0, ux, uy);
     }
 }
 
@@ -108,7 +115,9 @@ void Coupling::refillUncovered() {
             m_loadY[c.grain] -= rho * uy;
             m_loadT[c.grain] -= rho * (dx * uy - dy * ux);
         }
-        for (int q = 0; q < kQ; ++q) f[m_lattice.postSlot(c.cell, q)] = equilibrium(q, rho, ux, uy);
+        long long slots[kQ];
+        m_lattice.postSlots(c.cell, slots);
+        for (int q = 0; q < kQ; ++q) f[slots[q]] = equilibrium(q, rho, ux, uy);
         m_solid[c.cell] = 0;
     }
     for (const Cover& c : m_oldCover)
@@ -117,6 +126,7 @@ void Coupling::refillUncovered() {
 
 int Coupling::linksOf(const Cover& s, Link* out) const {
     // Fluid neighbour n = s + c_d of a covered node; its link into the grain points along -c_d.
+    if (!s.surface) return 0;
     Real cx, cy, r;
     grainGeometry(s.grain, cx, cy, r);
     int count = 0;
@@ -168,8 +178,11 @@ void Coupling::applyLinks() {
     for (long long k = 0; k < count; ++k) {
         const Link& l = m_links[k];
         const int d = l.dir, in = kOpposite[d];
-        const Real out = f[m_lattice.postSlot(l.fluid, d)];
-        const Real rho = m_lattice.density(l.fluid);
+        long long slots[kQ];
+        m_lattice.postSlots(l.fluid, slots);
+        const Real out = f[slots[d]];
+        Real rho = 0;
+        for (int q = 0; q < kQ; ++q) rho += f[slots[q]];
         Real ux, uy;
         surfaceVelocity(l.grain, l.rx, l.ry, ux, uy);
         const Real moving = 6.0 * kW[in] * rho * (kCx[in] * ux + kCy[in] * uy);
@@ -179,7 +192,7 @@ void Coupling::applyLinks() {
         else if (l.q < 0.5)
             value = out + moving;
         else
-            value = (out + (2 * l.q - 1) * f[m_lattice.postSlot(l.fluid, in)] + moving) / (2 * l.q);
+            value = (out + (2 * l.q - 1) * f[slots[in]] + moving) / (2 * l.q);
         f[m_lattice.inSlot(l.fluid, in)] = value;
         const Real dpx = kCx[d] * (out + value) - ux * (out - value);
         const Real dpy = kCy[d] * (out + value) - uy * (out - value);

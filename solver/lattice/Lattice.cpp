@@ -137,16 +137,33 @@ void Lattice::buildWallLinks() {
     }
 }
 
+void Lattice::postSlots(long long cell, long long slots[kQ]) const {
+    if (m_step & 1) {
+        for (int q = 0; q < kQ; ++q) slots[q] = kOpposite[q] * m_cells + cell;
+        return;
+    }
+    const int i = static_cast<int>(cell % m_nx), j = static_cast<int>(cell / m_nx);
+    if (i == 0 || j == 0 || i == m_nx - 1 || j == m_ny - 1) { // the neighbour may wrap
+        for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + neighbour(cell, q);
+        return;
+    }
+    for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + cell + kCx[q] + static_cast<long long>(kCy[q]) * m_nx;
+}
+
 Real Lattice::density(long long cell) const {
+    long long slots[kQ];
+    postSlots(cell, slots);
     Real rho = 0;
-    for (int q = 0; q < kQ; ++q) rho += m_f[postSlot(cell, q)];
+    for (int q = 0; q < kQ; ++q) rho += m_f[slots[q]];
     return rho;
 }
 
 void Lattice::velocity(long long cell, Real& ux, Real& uy) const {
+    long long slots[kQ];
+    postSlots(cell, slots);
     Real rho = 0, jx = 0, jy = 0;
     for (int q = 0; q < kQ; ++q) {
-        const Real v = m_f[postSlot(cell, q)];
+        const Real v = m_f[slots[q]];
         rho += v;
         jx += kCx[q] * v;
         jy += kCy[q] * v;
@@ -167,8 +184,11 @@ void Lattice::resetSolids() {
     // their (unused) values finite. Only the slots the link pass writes are ever read.
     Real* f = m_f.data();
 #pragma omp parallel for schedule(static) if (m_cells >= kParallelMinCells)
-    for (std::size_t k = 0; k < m_solids.size(); ++k)
-        for (int q = 0; q < kQ; ++q) f[postSlot(m_solids[k], q)] = kW[q];
+    for (std::size_t k = 0; k < m_solids.size(); ++k) {
+        long long slots[kQ];
+        postSlots(m_solids[k], slots);
+        for (int q = 0; q < kQ; ++q) f[slots[q]] = kW[q];
+    }
 }
 
 } // namespace lbdem::solver::lattice

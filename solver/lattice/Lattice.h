@@ -93,6 +93,8 @@ public:
     /// Index in populations() that the next step reads as the population arriving at `cell`
     /// along `dir` (sent from cell - c_dir): boundary passes write solid neighbours' values here.
     long long inSlot(long long cell, int dir) const { return inSlotAt(cell, dir, m_step & 1); }
+    /// postSlot() for all kQ directions of one cell at once (one division instead of kQ).
+    void postSlots(long long cell, long long slots[kQ]) const;
     /// Record, in every following step, the incoming (streamed, pre-collision) populations of
     /// these cells after the boundary passes: partially saturated cells re-collide from them.
     void setRecordedCells(const std::vector<long long>& cells) { m_recordedCells.assign(cells.begin(), cells.end()); }
