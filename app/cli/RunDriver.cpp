@@ -1,6 +1,7 @@
 // The run loop of `lbdem run` and `lbdem resume`.
 #include "app/cli/RunDriver.h"
 
+#include "solver/core/InputError.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/Checkpoint.h"
 #include "solver/io/PlanJson.h"
@@ -100,7 +101,7 @@ void RunDriver::writeCheckpoint() {
     io::writeCheckpoint((m_options.dir / "checkpoint.h5").string(), data);
 }
 
-void RunDriver::writeSummary(double wallSeconds, bool finished) const {
+void RunDriver::writeSummary(double wallSeconds, bool finished, const std::string& stopReason) const {
     const auto& plan = m_simulation.plan();
     const auto& p = *m_progress;
     const double steps = static_cast<double>(m_simulation.stepIndex() - p.firstStep);
@@ -132,6 +133,7 @@ void RunDriver::writeSummary(double wallSeconds, bool finished) const {
         stages[std::string(solver::stageName(stage))] = m_simulation.timer().seconds(stage);
     }
     summary["stage_seconds"] = stages;
+    if (!stopReason.empty()) summary["stop_reason"] = stopReason;
     io::writeFileAtomically((m_options.dir / "summary.json").string(), summary.dump(2) + "\n");
 }
 
@@ -173,19 +175,26 @@ void RunDriver::run() {
     const double halfStep = 0.5 * plan.dt_s;
 
     p.start = Clock::now();
-    while (true) {
-        if (m_simulation.time() >= p.nextOutputS - halfStep) {
-            writeOutput();
-            p.nextOutputS = p.outputIndex * outputInterval;
-            writeSummary(seconds(p.start), false);
+    try {
+        while (true) {
+            if (m_simulation.time() >= p.nextOutputS - halfStep) {
+                writeOutput();
+                p.nextOutputS = p.outputIndex * outputInterval;
+                writeSummary(seconds(p.start), false);
+            }
+            if (m_simulation.time() >= p.nextCheckpointS - halfStep) {
+                writeCheckpoint();
+                p.nextCheckpointS += checkpointInterval;
+            }
+            if (m_simulation.time() >= endS - halfStep) break;
+            m_simulation.step();
+            reportProgress(seconds(p.start), false);
         }
-        if (m_simulation.time() >= p.nextCheckpointS - halfStep) {
-            writeCheckpoint();
-            p.nextCheckpointS += checkpointInterval;
-        }
-        if (m_simulation.time() >= endS - halfStep) break;
-        m_simulation.step();
-        reportProgress(seconds(p.start), false);
+    } catch (const solver::SimulationError& error) {
+        // The stability guard stopped the run: say so in summary.json, so that a study or a
+        // sweep can tell an unstable run from a killed one without reading the log.
+        writeSummary(seconds(p.start), false, error.what());
+        throw;
     }
     // The flows end between output times: record the final state too, so that summary.json's
     // "final" is the end of the run (not done at an --until-tc stop, to keep resumes aligned).

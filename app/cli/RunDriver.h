@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
 
 namespace lbdem::cli {
 
@@ -36,14 +37,15 @@ public:
     void addSink(std::unique_ptr<SnapshotSink> sink);
 
     /// Run to the end time; returns when finished. Throws SimulationError when unstable (the
-    /// outputs and checkpoint written so far stay valid).
+    /// outputs and checkpoint written so far stay valid; summary.json then says finished = false
+    /// and gives the diagnosis as stop_reason).
     void run();
 
 private:
     struct Progress;
     void writeOutput();
     void writeCheckpoint();
-    void writeSummary(double wallSeconds, bool finished) const;
+    void writeSummary(double wallSeconds, bool finished, const std::string& stopReason = {}) const;
     void reportProgress(double wallSeconds, bool last);
 
     solver::Simulation& m_simulation;

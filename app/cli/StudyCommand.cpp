@@ -1,9 +1,11 @@
-// `lbdem study`: one case over several values of a key, each run as a separate process, then a
-// table and a figure of the metric's error against wall time.
+// `lbdem study`: one case over several values of one or more keys (their cartesian product), each
+// run as a separate process, then a table, a figure of the metric's error against wall time and,
+// over two or more keys, a map of the bounded and unstable settings.
 #include "app/cli/CaseOptions.h"
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JobRunner.h"
+#include "app/cli/StudyMap.h"
 #include "app/cli/StudyMetrics.h"
 #include "app/cli/StudyPlot.h"
 #include "app/cli/StudyReport.h"
@@ -34,7 +36,7 @@ namespace {
 
 struct StudyOptions {
     CaseOptions caseOptions;
-    std::string vary;
+    std::vector<std::string> vary;
     std::string metric;
     std::string reference;
     std::string out;
@@ -108,19 +110,57 @@ std::pair<std::string, std::vector<std::string>> parseVary(const std::string& va
     return {key, values};
 }
 
+/// Check every --vary and refuse a key given twice.
+std::vector<std::pair<std::string, std::vector<std::string>>>
+parseVaries(const std::vector<std::string>& varies) {
+    std::vector<std::pair<std::string, std::vector<std::string>>> axes;
+    for (const auto& vary : varies) {
+        auto axis = parseVary(vary);
+        for (const auto& [key, values] : axes)
+            if (key == axis.first)
+                throw solver::InputError("--vary " + vary, 0, key,
+                                         "the key is varied twice; give its values in one --vary");
+        axes.push_back(std::move(axis));
+    }
+    return axes;
+}
+
+/// The cartesian product of the axes' values, the first key slowest.
+std::vector<std::vector<std::string>>
+product(const std::vector<std::pair<std::string, std::vector<std::string>>>& axes) {
+    std::vector<std::vector<std::string>> settings{{}};
+    for (const auto& [key, values] : axes) {
+        std::vector<std::vector<std::string>> longer;
+        for (const auto& setting : settings)
+            for (const auto& value : values) {
+                longer.push_back(setting);
+                longer.back().push_back(value);
+            }
+        settings = std::move(longer);
+    }
+    return settings;
+}
+
 /// Load, plan and check every setting before any run starts; fills study and the runs' argv.
 std::vector<Job> prepare(const StudyOptions& options, StudySpec& study) {
-    const auto [key, values] = parseVary(options.vary);
-    study.key = key;
-    study.resolution = isResolutionKey(key);
+    const auto axes = parseVaries(options.vary);
+    for (const auto& axis : axes) {
+        if (study.resolutionKey < 0 && isResolutionKey(axis.first))
+            study.resolutionKey = static_cast<int>(study.keys.size());
+        study.keys.push_back(axis.first);
+    }
     const fs::path out = options.out;
     const std::string self = selfExecutable();
     std::vector<Job> jobs;
-    for (const auto& value : values) {
+    for (const auto& values : product(axes)) {
+        StudySetting setting{values, {}};
+        const std::string label = settingLabel(study, setting);
         auto overrides = options.caseOptions.overrides;
-        overrides.push_back(key + "=" + value);
+        for (std::size_t k = 0; k < values.size(); ++k)
+            overrides.push_back(study.keys[k] + "=" + values[k]);
         // VTK series are not needed for a study, and writing them would count in wall_s.
-        if (key != "output.vtk") overrides.push_back("output.vtk=false");
+        if (std::find(study.keys.begin(), study.keys.end(), "output.vtk") == study.keys.end())
+            overrides.push_back("output.vtk=false");
         const solver::CaseSpec spec = io::loadCase(options.caseOptions.path, overrides);
         const auto kind = solver::sceneFromName(spec.scene);
         if (!solver::isFlowScene(kind) && kind != solver::SceneKind::ColumnCollapse)
@@ -135,21 +175,21 @@ std::vector<Job> prepare(const StudyOptions& options, StudySpec& study) {
             study.caseName = spec.name;
             study.metric = metric;
         } else if (metric.name != study.metric.name) {
-            throw solver::InputError(
-                "--vary " + options.vary + ": the settings have different default metrics (" +
-                study.metric.name + ", " + metric.name + "); choose one with --metric");
+            throw solver::InputError("--vary: the settings have different default metrics (" +
+                                     study.metric.name + ", " + metric.name +
+                                     "); choose one with --metric");
         }
         if (options.reference == "analytic" && !metric.analytic)
             throw solver::InputError("--reference analytic: a run of scene '" + spec.scene +
-                                     "' with " + key + "=" + value +
+                                     "' with " + label +
                                      " reports no analytic or published value for " + metric.name +
                                      "; use --reference finest");
         study.metric.analytic = study.metric.analytic && metric.analytic;
-        const fs::path dir = out / (key + "=" + value);
-        study.settings.push_back({value, dir});
-        Job job{key + "=" + value,
-                {self, "run", options.caseOptions.path, "--out", dir.string(), "--quiet"},
-                (dir / "log.txt").string()};
+        setting.dir = out / label;
+        study.settings.push_back(setting);
+        Job job{label,
+                {self, "run", options.caseOptions.path, "--out", setting.dir.string(), "--quiet"},
+                (setting.dir / "log.txt").string()};
         for (const auto& assignment : overrides)
             job.argv.insert(job.argv.end(), {"--set", assignment});
         jobs.push_back(std::move(job));
@@ -166,6 +206,30 @@ std::string formatNumber(double value) {
     return buffer;
 }
 
+/// Tabulate the finished study: study.csv/.md, study.png when it has an error scale, and
+/// study_map.md over two or more keys.
+void writeStudyOutputs(const StudySpec& study, const StudyOptions& options) {
+    const fs::path out = options.out;
+    const auto rows = tabulateStudy(study);
+    // Over several keys with neither an analytic value nor a resolution key, the "error" is a
+    // difference from the last value of a key: tabulated, but not worth a figure.
+    const bool noErrorScale = study.keys.size() > 1 && study.resolutionKey < 0 &&
+                              study.reference == StudyReference::Finest;
+    const bool plotted = !noErrorScale && writeStudyPlot(study, rows, (out / "study.png").string());
+    std::string plotNote;
+    if (noErrorScale && studyPlotAvailable())
+        plotNote = "The errors are differences from the last value of " + study.keys.back() +
+                   ", neither an analytic value nor a finer resolution, so study.png is not drawn.";
+    else if (studyPlotAvailable() && !plotted)
+        plotNote = "No setting has a positive error and wall time, so study.png is not drawn.";
+    if (!plotNote.empty() && !options.quiet) std::cerr << "note: " << plotNote << "\n";
+    auto written = writeStudyTables(study, rows, out, plotted, plotNote);
+    if (study.keys.size() > 1) written.push_back(writeStudyMap(study, rows, out));
+    if (!options.quiet)
+        for (const auto& path : written)
+            std::cout << "wrote " << path << "\n";
+}
+
 int runStudy(const StudyOptions& options) {
     StudySpec study;
     std::vector<Job> planned = prepare(options, study); // bad input fails here, before any run
@@ -177,8 +241,10 @@ int runStudy(const StudyOptions& options) {
     std::vector<std::size_t> settingOf;
     for (std::size_t k = 0; k < planned.size(); ++k) {
         const fs::path& dir = study.settings[k].dir;
-        if (runFinished(dir)) {
-            if (!options.quiet) std::cout << "skip    " << planned[k].label << " (finished)\n";
+        if (runFinished(dir) || runUnstable(dir)) {
+            if (!options.quiet)
+                std::cout << "skip    " << planned[k].label
+                          << (runUnstable(dir) ? " (unstable)\n" : " (finished)\n");
             continue;
         }
         fs::create_directories(dir);
@@ -198,30 +264,31 @@ int runStudy(const StudyOptions& options) {
         ::setenv("OMP_NUM_THREADS", std::to_string(std::max(1u, cores / options.jobs)).c_str(), 1);
     int failures = 0;
     runJobs(jobs, options.jobs, [&](const JobResult& result, int done, int total) {
-        failures += result.exit_code != 0;
+        std::size_t k = 0;
+        while (k < jobs.size() && jobs[k].label != result.label)
+            ++k;
+        const StudySetting& setting = study.settings[settingOf[k]];
+        // A run the stability guard stopped is a result of the study, not a failure.
+        const auto unstable = result.exit_code != 0 ? runUnstable(setting.dir) : std::nullopt;
+        failures += result.exit_code != 0 && !unstable;
         if (options.quiet) return;
         std::cout << "[" << done << "/" << total << "] " << result.label;
+        if (unstable) {
+            std::cout << " unstable after " << formatNumber(result.wall_s) << " s: " << *unstable
+                      << "\n"
+                      << std::flush;
+            return;
+        }
         if (result.exit_code != 0) {
             std::cout << " FAILED (see its log.txt)\n" << std::flush;
             return;
         }
-        std::size_t k = 0;
-        while (k < jobs.size() && jobs[k].label != result.label)
-            ++k;
-        const auto value = readStudyMetric(study, study.settings[settingOf[k]]);
+        const auto value = readStudyMetric(study, setting);
         std::cout << " finished in " << formatNumber(result.wall_s) << " s: " << study.metric.name
                   << " = " << (value ? formatNumber(*value) : "(missing)") << "\n"
                   << std::flush;
     });
-    const auto rows = tabulateStudy(study);
-    const bool plotted = writeStudyPlot(study, rows, (out / "study.png").string());
-    if (studyPlotAvailable() && !plotted && !options.quiet)
-        std::cerr
-            << "note: no setting has a positive error and wall time: study.png is not drawn\n";
-    const auto written = writeStudyTables(study, rows, out, plotted);
-    if (!options.quiet)
-        for (const auto& path : written)
-            std::cout << "wrote " << path << "\n";
+    writeStudyOutputs(study, options);
     return failures == 0 ? kExitOk : kExitFailure;
 }
 
@@ -230,13 +297,15 @@ int runStudy(const StudyOptions& options) {
 void addStudyCommand(CLI::App& app, int& exitCode) {
     auto options = std::make_shared<StudyOptions>();
     auto* command = app.add_subcommand(
-        "study", "Run a case over several values of one key (separate processes) "
-                 "and tabulate a metric's error against wall time");
+        "study", "Run a case over several values of one or more keys (their product, separate "
+                 "processes) and tabulate a metric's error against wall time");
     options->caseOptions.addTo(*command);
     command
         ->add_option("--vary", options->vary,
-                     "KEY=V1,V2,...: the key and its values, e.g. flow.nodes=8,16,32")
-        ->required();
+                     "KEY=V1,V2,...: a key and its values, e.g. flow.nodes=8,16,32; repeat it to "
+                     "run the cartesian product of several keys (also writes study_map.md)")
+        ->required()
+        ->allow_extra_args(false);
     command->add_option(
         "--metric", options->metric,
         "Number of summary.json to compare (default: the scene's natural metric: poiseuille "
@@ -250,7 +319,7 @@ void addStudyCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::IsMember({"analytic", "finest"}));
     command
         ->add_option("--out", options->out,
-                     "Output folder: one run folder per value, study.csv/.md/.png")
+                     "Output folder: one run folder per setting, study.csv/.md/.png")
         ->required();
     command
         ->add_option("--jobs", options->jobs, "Runs at the same time (timings are fairest with 1)")

@@ -3,6 +3,8 @@
 
 #ifdef LBDEM_HAS_VIS
 #include "ui/vis/LineChart.h"
+
+#include <algorithm>
 #endif
 
 namespace lbdem::cli {
@@ -18,21 +20,37 @@ bool studyPlotAvailable() {
 bool writeStudyPlot(const StudySpec& study, const std::vector<StudyRow>& rows,
                     const std::string& path) {
 #ifdef LBDEM_HAS_VIS
-    vis::ChartSeries series{study.key, {}, {}, true};
-    for (const auto& row : rows) {
+    // One series for a one-key study; otherwise one per value of the first key, its points
+    // labelled with the other keys' values.
+    const bool multi = study.keys.size() > 1;
+    std::vector<vis::ChartSeries> series;
+    std::size_t points = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const auto& values = study.settings[k].values;
+        const std::string name = multi ? study.keys[0] + "=" + values[0] : study.keys[0];
+        if (series.empty() || series.back().name != name)
+            series.push_back(vis::ChartSeries{name, {}, {}, true, static_cast<int>(series.size())});
+        const auto& row = rows[k];
         if (!row.error || *row.error <= 0 || row.wallS <= 0) continue; // a log axis has no 0
-        series.x.push_back(row.wallS);
-        series.y.push_back(*row.error);
-        series.labels.push_back(row.setting);
+        std::string label = multi ? "" : row.setting;
+        for (std::size_t key = 1; key < values.size(); ++key)
+            label += (key > 1 ? "," : "") + study.keys[key] + "=" + values[key];
+        series.back().x.push_back(row.wallS);
+        series.back().y.push_back(*row.error);
+        series.back().labels.push_back(label);
+        ++points;
     }
-    if (series.x.empty()) return false;
+    if (points == 0) return false;
+    series.erase(std::remove_if(series.begin(), series.end(),
+                                [](const vis::ChartSeries& s) { return s.x.empty(); }),
+                 series.end());
     vis::ChartSpec spec;
     const bool isError = study.reference == StudyReference::Analytic && study.metric.isError;
     spec.yTitle = isError ? study.metric.name : "relative error of " + study.metric.name;
     spec.title = study.caseName + ": " + spec.yTitle + " against wall time";
     spec.xTitle = "wall time [s]";
-    spec.series.push_back(std::move(series));
-    spec.legend = false;
+    spec.series = std::move(series);
+    spec.legend = multi;
     spec.logX = spec.logY = true;
     vis::renderLineChart(spec, path, 900, 600);
     return true;

@@ -62,7 +62,8 @@ void declareFluid(CaseSchema& s) {
               [](CaseSpec& c) -> double& { return c.fluid.s_eps; });
     s.addReal("fluid", "s_q", "-", 0, 2, "MRT relaxation rate of the energy-flux moments q.",
               [](CaseSpec& c) -> double& { return c.fluid.s_q; });
-    s.addChoice("fluid", "storage", {"double", "float"}, "Precision of the stored distributions.",
+    s.addChoice("fluid", "storage", {"double"},
+                "Precision of the stored distributions (double only: float storage is not implemented).",
                 [](CaseSpec& c) -> std::string& { return c.fluid.storage; });
 }
 
@@ -71,16 +72,19 @@ void declareFlow(CaseSchema& s) {
                  "Lattice nodes across the characteristic length (channel width, vortex "
                  "wavelength, cavity side, cylinder diameter).",
                  [](CaseSpec& c) -> int& { return c.flow.nodes; });
-    s.addReal("flow", "reynolds", "-", 1e-3, 1e7,
-              "Reynolds number U L / nu of a verification flow (cylinder: U = mean inflow).",
+    s.addReal("flow", "reynolds", "-", 0, 1e7,
+              "Reynolds number U L / nu of a verification flow (cylinder: U = mean inflow); 0 "
+              "with flow.tau above 0.5 imposes tau and lattice_velocity (both stability "
+              "numbers) and lets Re follow.",
               [](CaseSpec& c) -> double& { return c.flow.reynolds; });
     s.addReal("flow", "lattice_velocity", "-", 1e-5, 0.3,
               "Peak velocity in lattice units (lid, centreline, amplitude, peak inflow); used "
-              "when flow.tau = 0.",
+              "when flow.tau = 0 or flow.reynolds = 0.",
               [](CaseSpec& c) -> double& { return c.flow.lattice_velocity; });
     s.addReal("flow", "tau", "-", 0, 5,
               "Relaxation time of a verification flow; 0 derives it from lattice_velocity and "
-              "reynolds, above 0.5 it is imposed and the velocity follows from reynolds.",
+              "reynolds, above 0.5 it is imposed and the velocity follows from reynolds (from "
+              "lattice_velocity when reynolds = 0).",
               [](CaseSpec& c) -> double& { return c.flow.tau; });
     s.addInteger("flow", "steps", "-", 0, 2000000000,
                  "Lattice steps to run; 0 uses the scene's default (steady state or decay time).",

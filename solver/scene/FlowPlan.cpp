@@ -1,6 +1,8 @@
 // Planning of the verification flows: characteristic length, Reynolds number, lattice velocity.
 #include "solver/scene/FlowPlan.h"
 
+#include "solver/core/InputError.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -47,12 +49,21 @@ FlowScales flowScales(const CaseSpec& spec) {
     s.length_m = cylinder ? spec.domain.height_m / kCylinderHeightOverD : spec.domain.height_m;
     s.h_m = s.length_m / f.nodes;
     const double refOverPeak = cylinder ? kMeanOverPeakInflow : 1.0;
-    if (f.tau > 0.5) { // diffusive scaling: tau fixed, velocity from Re
+    if (f.tau > 0.5 && f.reynolds > 0) { // diffusive scaling: tau fixed, velocity from Re
         s.tau = f.tau;
         s.nu_lattice = (f.tau - 0.5) / 3.0;
         s.u_ref = f.reynolds * s.nu_lattice / f.nodes;
         s.u_peak = s.u_ref / refOverPeak;
+    } else if (f.tau > 0.5) { // reynolds = 0: tau and velocity (Mach) imposed, Re follows
+        s.tau = f.tau;
+        s.nu_lattice = (f.tau - 0.5) / 3.0;
+        s.u_peak = f.lattice_velocity;
+        s.u_ref = s.u_peak * refOverPeak;
     } else {
+        if (!(f.reynolds > 0))
+            throw InputError("", 0, "flow.reynolds",
+                             "0 derives the Reynolds number from flow.tau and "
+                             "flow.lattice_velocity, so it needs flow.tau above 0.5");
         s.u_peak = f.lattice_velocity;
         s.u_ref = s.u_peak * refOverPeak;
         s.nu_lattice = s.u_ref * f.nodes / f.reynolds;

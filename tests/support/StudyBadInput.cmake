@@ -28,3 +28,6 @@ expect_bad("no such number in summary\\.json; did you mean 'l2_error'\\?" --vary
 expect_bad("no analytic or published value for u_max_m_s" --vary flow.nodes=8,16 --metric u_max_m_s
            --reference analytic)
 expect_bad("expected KEY=V1,V2" --vary 8,16)
+expect_bad("key 'flow\\.nodes': the key is varied twice" --vary flow.nodes=8,16 --vary flow.nodes=32,64)
+expect_bad("key 'flow\\.reynolds': 0 derives the Reynolds number" --vary flow.nodes=8,16
+           --set flow.reynolds=0 --set flow.tau=0)

@@ -31,7 +31,8 @@ QStringList samplePresets() {
     for (const QString& folder : {QString(), QString("paper"), QString("verification")}) {
         const QDir dir(folder.isEmpty() ? root : root + "/" + folder);
         for (const QString& name : dir.entryList({"*.toml"}, QDir::Files, QDir::Name))
-            presets << (folder.isEmpty() ? name : folder + "/" + name);
+            if (!name.startsWith("sweep")) // sweep files list cases; they are not cases
+                presets << (folder.isEmpty() ? name : folder + "/" + name);
     }
     return presets;
 }
