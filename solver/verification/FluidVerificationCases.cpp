@@ -44,12 +44,15 @@ CaseSpec fluidCase(const std::string& scene, int nodes, const std::string& colli
         c.fluid.density_kg_m3 = 1.0;
         c.fluid.viscosity_m2_s = 1e-3;
         c.flow.reynolds = 20;
-        // U_max = 0.05: the compressibility error of C_D grows as U^2 (measured: +4 % at 0.1,
-        // +1.5 % at 0.05 for D = 20). s_q = 1/tau: with the default s_q = 1.9 the Zou-He
-        // inlet nodes diverged at tau = 0.6 (measured), with s_q = s_nu they are stable.
-        c.flow.lattice_velocity = 0.05;
+        // Two errors add up: compressibility, growing as U^2 (measured at D = 20: C_D 5.643 at
+        // U_max = 0.05, 5.605 at 0.025), and the wall position, second order in 1/D once
+        // Lambda = 3/16 puts the bounce-back wall exactly half-way (5.643 at D = 20, 5.595 at
+        // D = 40, both U_max = 0.05 (D/20)^-1; Richardson: 5.579). U_max = 0.05 (20/D)^2 shrinks
+        // both together: D = 20 at U_max 0.05 (tau 0.6), D = 40 at 0.0125 (tau 0.55).
+        // The default s_q = 1.9 made the Zou-He inlet nodes diverge at tau = 0.6 (measured).
+        c.flow.lattice_velocity = 0.05 * (20.0 / nodes) * (20.0 / nodes);
         const double tau = 0.5 + 3.0 * (2.0 / 3.0) * c.flow.lattice_velocity * nodes / c.flow.reynolds;
-        c.fluid.s_q = 1.0 / tau;
+        c.fluid.s_q = 1.0 / (0.5 + (3.0 / 16.0) / (tau - 0.5));
     } else {
         throw InputError("no fluid verification case for scene '" + scene + "'");
     }
