@@ -1,12 +1,16 @@
 // Child processes with posix_spawn, output redirected to a log file per job.
 #include "app/cli/JobRunner.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <fcntl.h>
 #include <map>
 #include <spawn.h>
 #include <stdexcept>
+#include <string>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 extern char** environ;
@@ -70,6 +74,13 @@ std::string selfExecutable() {
     if (length <= 0) throw std::runtime_error("cannot find the lbdem executable (/proc/self/exe)");
     path.resize(static_cast<std::size_t>(length));
     return path;
+}
+
+void shareCoresBetweenJobs(int maxParallel) {
+    // Oversubscribed cores slow every job down (busy-waiting OpenMP threads most of all).
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    if (maxParallel > 1 && !std::getenv("OMP_NUM_THREADS"))
+        ::setenv("OMP_NUM_THREADS", std::to_string(std::max(1u, cores / static_cast<unsigned>(maxParallel))).c_str(), 1);
 }
 
 } // namespace lbdem::cli

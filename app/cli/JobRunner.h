@@ -26,6 +26,10 @@ struct JobResult {
 std::vector<JobResult> runJobs(const std::vector<Job>& jobs, int maxParallel,
                                const std::function<void(const JobResult&, int done, int total)>& onFinished);
 
+/// Share the cores between maxParallel jobs going at once (OMP_NUM_THREADS for the children),
+/// unless the user set OMP_NUM_THREADS.
+void shareCoresBetweenJobs(int maxParallel);
+
 /// Path of the running executable (to start lbdem itself as a child).
 std::string selfExecutable();
 

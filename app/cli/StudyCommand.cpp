@@ -258,10 +258,7 @@ int runStudy(const StudyOptions& options) {
         settingOf.push_back(k);
     }
     std::cout.flush();
-    // Share the cores between the runs that go at once instead of oversubscribing them.
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    if (options.jobs > 1 && !std::getenv("OMP_NUM_THREADS"))
-        ::setenv("OMP_NUM_THREADS", std::to_string(std::max(1u, cores / options.jobs)).c_str(), 1);
+    shareCoresBetweenJobs(options.jobs);
     int failures = 0;
     runJobs(jobs, options.jobs, [&](const JobResult& result, int done, int total) {
         std::size_t k = 0;

@@ -67,10 +67,7 @@ int runSweep(const SweepOptions& options) {
         jobs.push_back(std::move(job));
     }
     std::cout.flush();
-    // Share the cores between the runs that go at once instead of oversubscribing them.
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    if (options.jobs > 1 && !std::getenv("OMP_NUM_THREADS"))
-        ::setenv("OMP_NUM_THREADS", std::to_string(std::max(1u, cores / options.jobs)).c_str(), 1);
+    shareCoresBetweenJobs(options.jobs);
     int failures = 0;
     runJobs(jobs, options.jobs, [&](const JobResult& result, int done, int total) {
         failures += result.exit_code != 0;
