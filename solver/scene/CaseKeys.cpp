@@ -63,7 +63,7 @@ void declareFluid(CaseSchema& s) {
     s.addReal("fluid", "s_q", "-", 0, 2, "MRT relaxation rate of the energy-flux moments q.",
               [](CaseSpec& c) -> double& { return c.fluid.s_q; });
     s.addChoice("fluid", "storage", {"double"},
-                "Precision of the stored distributions (double only: float storage is not implemented).",
+                "Precision of the stored distributions (double is the one offered).",
                 [](CaseSpec& c) -> std::string& { return c.fluid.storage; });
 }
 
