@@ -33,6 +33,7 @@ struct RenderOptions {
     std::string field = "speed";
     std::string grainColor = "speed";
     double chainThreshold = 1.0;
+    std::string fluidRange, grainRange; ///< "MIN,MAX" fixes the colour range; empty: automatic
     bool quiet = false;
 };
 
@@ -45,6 +46,20 @@ std::pair<int, int> parseSize(const std::string& text) {
         throw solver::InputError("--size '" + text + "': expected WIDTHxHEIGHT in pixels, e.g. "
                                  "1200x800 (16 to 16384 a side)");
     return {width, height};
+}
+
+/// Parses "MIN,MAX" (MIN < MAX) into a fixed colour range; empty text keeps the range automatic.
+vis::ColorRange parseRange(const std::string& option, const std::string& text) {
+    vis::ColorRange range;
+    if (text.empty()) return range;
+    double low = 0, high = 0;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%lf,%lf%c", &low, &high, &extra) != 2 || !(low < high))
+        throw solver::InputError(option + " '" + text + "': expected MIN,MAX with MIN < MAX, e.g. 0,0.1");
+    range.fixed = true;
+    range.min = low;
+    range.max = high;
+    return range;
 }
 
 /// The frames to draw: all, the one nearest --time, --frame N, or the last (the default).
@@ -88,6 +103,8 @@ void render(const RenderOptions& options) {
     vis::LayerSet layers = vis::parseLayerSet(options.layers);
     layers.fluidField = vis::parseFluidField(options.field);
     layers.grainColoring = vis::parseGrainColoring(options.grainColor);
+    layers.fluidRange() = parseRange("--fluid-range", options.fluidRange);
+    layers.grainRange() = parseRange("--grain-range", options.grainRange);
     const vis::VtkRunReader reader(options.runDir);
     const std::vector<int> frames = chosenFrames(options, reader);
     vis::OffscreenRenderer renderer(width, height, layers);
@@ -126,6 +143,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     command->add_option("--chain-threshold", options->chainThreshold,
                         "Draw force chains above this multiple of the mean normal force")
         ->capture_default_str()->check(CLI::NonNegativeNumber);
+    command->add_option("--fluid-range", options->fluidRange,
+                        "Fix the fluid colour range to MIN,MAX in the field's SI unit (default: each frame's)");
+    command->add_option("--grain-range", options->grainRange,
+                        "Fix the grain colour range to MIN,MAX in SI units (default: each frame's)");
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
     command->callback([options, &exitCode] {
         render(*options);

@@ -21,6 +21,7 @@ private slots:
     void lastFrameWithoutDisplay();
     void allFramesIntoFolder();
     void timePicksNearestFrame();
+    void fixedRangesChangeTheImage();
     void badInputExitsTwo_data();
     void badInputExitsTwo();
     void staleDisplayFallsBackToXvfb();
@@ -92,12 +93,36 @@ void RenderCommandTest::timePicksNearestFrame() {
     QVERIFY2(output.contains("frame 2"), qPrintable(output));
 }
 
+void RenderCommandTest::fixedRangesChangeTheImage() {
+    // The same frame with automatic and with fixed colour ranges: a far wider fixed range maps
+    // every speed to the low end of the colour maps, so most coloured pixels must differ.
+    const QString automatic = m_dir.filePath("auto.png"), fixed = m_dir.filePath("fixed.png");
+    QCOMPARE(lbdem({"render", m_run, "--png", automatic, "--size", "900x600", "--quiet"}), 0);
+    QCOMPARE(lbdem({"render", m_run, "--png", fixed, "--size", "900x600", "--quiet", "--fluid-range", "0,1000",
+                    "--grain-range", "0,1000"}),
+             0);
+    const auto a = support::readPng(automatic.toStdString()), b = support::readPng(fixed.toStdString());
+    QVERIFY(a && b);
+    int dims[3];
+    a->GetDimensions(dims);
+    int differing = 0;
+    for (int y = 0; y < dims[1]; ++y)
+        for (int x = 0; x < dims[0]; ++x) {
+            const auto* p = static_cast<unsigned char*>(a->GetScalarPointer(x, y, 0));
+            const auto* q = static_cast<unsigned char*>(b->GetScalarPointer(x, y, 0));
+            differing += p[0] != q[0] || p[1] != q[1] || p[2] != q[2];
+        }
+    QVERIFY2(differing > dims[0] * dims[1] / 10, qPrintable(QString("%1 pixels differ").arg(differing)));
+}
+
 void RenderCommandTest::badInputExitsTwo_data() {
     QTest::addColumn<QStringList>("arguments");
     QTest::newRow("missing frame") << QStringList{"--frame", "9"};
     QTest::newRow("bad layer") << QStringList{"--layers", "fluid,grain"};
     QTest::newRow("bad size") << QStringList{"--size", "300"};
     QTest::newRow("frame and all") << QStringList{"--frame", "1", "--all"};
+    QTest::newRow("inverted fluid range") << QStringList{"--fluid-range", "0.1,0.02"};
+    QTest::newRow("one-number grain range") << QStringList{"--grain-range", "0.5"};
 }
 
 void RenderCommandTest::badInputExitsTwo() {
