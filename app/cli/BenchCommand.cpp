@@ -91,9 +91,10 @@ int runFluidBench(const BenchOptions& options) {
 #else
     const int threads = 1;
 #endif
-    // The probe runs before and after the kernels; the better figure is the roofline, so that
-    // a moment of interference from other processes does not inflate the fractions.
-    double bandwidth = lat::measureBandwidthGBs();
+    // The probe runs before and after the kernels; the roofline uses the median of all its
+    // passes, the same statistic as the kernels' MLUPS (a shared machine's memory bandwidth
+    // drifts: the best pass would be an outlier, a single probe a moment).
+    std::vector<double> passes = lat::measureBandwidthPassesGBs();
     std::vector<KernelResult> results;
     for (auto model : {lat::CollisionModel::Bgk, lat::CollisionModel::Mrt, lat::CollisionModel::MrtLes}) {
         KernelResult r;
@@ -103,7 +104,9 @@ int runFluidBench(const BenchOptions& options) {
         r.bytesPerUpdate = kBytesPerUpdateDouble;
         results.push_back(r);
     }
-    bandwidth = std::max(bandwidth, lat::measureBandwidthGBs());
+    for (double rate : lat::measureBandwidthPassesGBs()) passes.push_back(rate);
+    std::sort(passes.begin(), passes.end());
+    const double bandwidth = 0.5 * (passes[(passes.size() - 1) / 2] + passes[passes.size() / 2]);
     for (auto& r : results) {
         r.rooflineMlups = bandwidth * 1e9 / r.bytesPerUpdate / 1e6;
         r.fraction = r.mlups / r.rooflineMlups;
