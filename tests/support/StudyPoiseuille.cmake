@@ -2,6 +2,7 @@
 # is written, the L2 error against the analytic profile u(y) = 4 U y (H - y) / H^2 falls from 8 to
 # 16 nodes at an observed order near 2 (second-order lattice Boltzmann, diffusive scaling), and a
 # second call skips the finished runs. Usage: cmake -DLBDEM=... -DCASE=... -DOUT=... -DVIS=ON|OFF -P this.
+include("${CMAKE_CURRENT_LIST_DIR}/StudyChecks.cmake")
 cmake_policy(SET CMP0007 NEW) # keep the empty CSV cells when splitting a row into a list
 file(REMOVE_RECURSE "${OUT}")
 execute_process(COMMAND "${LBDEM}" study "${CASE}" --vary flow.nodes=8,16 --out "${OUT}"
@@ -12,21 +13,9 @@ endif()
 if(NOT out MATCHES "\\[2/2\\] flow\\.nodes=[0-9]+ finished in [^\n]*l2_error = ")
     message(FATAL_ERROR "no progress line per finished run: ${out}")
 endif()
-set(expected study.csv study.md)
-if(VIS)
-    list(APPEND expected study.png)
-endif()
-foreach(name IN LISTS expected)
-    if(NOT EXISTS "${OUT}/${name}")
-        message(FATAL_ERROR "${OUT}/${name} was not written: ${out}${err}")
-    endif()
-endforeach()
+study_expect_files("${OUT}" "${VIS}")
 # flow.nodes,status,metric,metric_value,reference,error,wall_s,mlups,observed_order,diagnosis
-file(STRINGS "${OUT}/study.csv" rows)
-list(LENGTH rows count)
-if(NOT count EQUAL 3)
-    message(FATAL_ERROR "expected a header and 2 rows in study.csv, got ${count}: ${rows}")
-endif()
+study_read_rows("${OUT}" 2 rows)
 list(GET rows 1 coarse)
 list(GET rows 2 fine)
 string(REPLACE "," ";" coarse "${coarse}")

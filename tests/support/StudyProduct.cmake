@@ -3,6 +3,7 @@
 # collision model (second-order lattice Boltzmann, diffusive scaling; the L2 error is against
 # the analytic u(y) = 4 U y (H - y) / H^2), and study_map.md with a row per collision model and a
 # column per resolution. Usage: cmake -DLBDEM=... -DCASE=... -DOUT=... -DVIS=ON|OFF -P this.
+include("${CMAKE_CURRENT_LIST_DIR}/StudyChecks.cmake")
 cmake_policy(SET CMP0007 NEW) # keep the empty CSV cells when splitting a row into a list
 file(REMOVE_RECURSE "${OUT}")
 execute_process(COMMAND "${LBDEM}" study "${CASE}" --vary fluid.collision=bgk,mrt
@@ -14,21 +15,9 @@ endif()
 if(NOT out MATCHES "\\[4/4\\] fluid\\.collision=[a-z]+,flow\\.nodes=[0-9]+ finished in ")
     message(FATAL_ERROR "no progress line per finished run: ${out}")
 endif()
-set(expected study.csv study.md study_map.md)
-if(VIS)
-    list(APPEND expected study.png)
-endif()
-foreach(name IN LISTS expected)
-    if(NOT EXISTS "${OUT}/${name}")
-        message(FATAL_ERROR "${OUT}/${name} was not written: ${out}${err}")
-    endif()
-endforeach()
+study_expect_files("${OUT}" "${VIS}" study_map.md)
 # fluid.collision,flow.nodes,status,metric,metric_value,reference,error,wall_s,mlups,observed_order,diagnosis
-file(STRINGS "${OUT}/study.csv" rows)
-list(LENGTH rows count)
-if(NOT count EQUAL 5)
-    message(FATAL_ERROR "expected a header and 4 rows in study.csv, got ${count}: ${rows}")
-endif()
+study_read_rows("${OUT}" 4 rows)
 list(GET rows 0 header)
 if(NOT header MATCHES "^fluid\\.collision,flow\\.nodes,status,")
     message(FATAL_ERROR "study.csv needs a column per varied key: ${header}")

@@ -4,6 +4,7 @@
 # The Lattice Boltzmann Method, 2017, sec. 10.6: BGK loses stability as tau -> 1/2). The study
 # exits 0, keeps the guard's diagnosis, maps the cell as unstable and skips it when called again.
 # Usage: cmake -DLBDEM=... -DCASE=... -DOUT=... -P this.
+include("${CMAKE_CURRENT_LIST_DIR}/StudyChecks.cmake")
 file(REMOVE_RECURSE "${OUT}")
 set(args study "${CASE}" --vary fluid.collision=bgk,mrt_les --vary flow.tau=0.5001,0.8
     --set flow.reynolds=0 --set flow.lattice_velocity=0.1 --set flow.steps=400 --out "${OUT}")
@@ -14,11 +15,7 @@ endif()
 if(NOT out MATCHES "fluid\\.collision=bgk,flow\\.tau=0\\.5001 unstable after [^\n]*: step [0-9]+: the fluid diverged")
     message(FATAL_ERROR "no 'unstable' progress line with the diagnosis: ${out}")
 endif()
-file(STRINGS "${OUT}/study.csv" rows)
-list(LENGTH rows count)
-if(NOT count EQUAL 5)
-    message(FATAL_ERROR "expected a header and 4 rows in study.csv, got ${count}: ${rows}")
-endif()
+study_read_rows("${OUT}" 4 rows)
 list(GET rows 1 bgk_low)
 if(NOT bgk_low MATCHES "^bgk,0\\.5001,unstable,.*\"step [0-9]+: the fluid diverged[^\"]*tau - 0\\.5 = 0\\.0001")
     message(FATAL_ERROR "the BGK run at tau = 0.5001 is not recorded as unstable with its diagnosis: ${bgk_low}")
