@@ -45,6 +45,7 @@ Coupling::Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const Couplin
 void Coupling::resizeGrains() {
     const std::size_t n = m_dem.particles().size();
     if (m_loadX.size() == n) return;
+    m_box.assign(n, Box{});
     m_loadX.assign(n, 0.0);
     m_loadY.assign(n, 0.0);
     m_loadT.assign(n, 0.0);
@@ -112,16 +113,25 @@ GrainLoad Coupling::load(std::size_t i) const {
 }
 
 std::size_t Coupling::boundaryCount() const {
-    return m_params.method == CouplingMethod::BounceBack ? m_links.size() : m_psm.size();
+    return m_params.method == CouplingMethod::BounceBack ? m_linkCount : m_psm.size();
 }
 
 CouplingState Coupling::state() const {
+    // Covered nodes grain by grain, each grain's row by row: the order mapGrains finds them in.
     CouplingState state;
     state.initialised = m_initialised;
     state.previous_loads = m_previousLoad;
-    for (const Cover& c : m_cover) {
-        state.cells.push_back(c.cell);
-        state.grains.push_back(c.grain);
+    for (std::size_t p = 0; p < m_box.size(); ++p) {
+        const Box& box = m_box[p];
+        for (int ju = box.j0; ju <= box.j1; ++ju)
+            for (int iu = box.i0; iu <= box.i1; ++iu) {
+                int i = iu, j = ju;
+                if (!wrapNode(i, j)) continue;
+                const long long c = m_lattice.index(i, j);
+                if (m_owner[c] != static_cast<std::int32_t>(p)) continue;
+                state.cells.push_back(c);
+                state.grains.push_back(static_cast<std::int32_t>(p));
+            }
     }
     return state;
 }
@@ -129,32 +139,42 @@ CouplingState Coupling::state() const {
 void Coupling::restore(const CouplingState& state) {
     if (state.cells.size() != state.grains.size())
         throw InputError("coupling state: cell and grain lists differ in length");
-    if (!state.previous_loads.empty() && state.previous_loads.size() != 3 * m_dem.particles().size())
+    const std::size_t n = m_dem.particles().size();
+    if (!state.previous_loads.empty() && state.previous_loads.size() != 3 * n)
         throw InputError("coupling state: the previous loads do not match the grain count");
+    resizeGrains();
     m_previousLoad = state.previous_loads;
-    for (const Cover& c : m_cover) {
-        m_owner[c.cell] = -1;
-        m_solid[c.cell] = 0;
+    if (m_params.method == CouplingMethod::BounceBack) {
+        std::fill(m_owner.begin(), m_owner.end(), -1);
+        std::fill(m_solid.begin(), m_solid.end(), 0.0);
     }
-    m_cover.clear();
+    m_box.assign(n, Box{});
     m_initialised = state.initialised;
     const int nx = m_lattice.nx();
     for (std::size_t k = 0; k < state.cells.size(); ++k) {
         const long long c = state.cells[k];
-        if (c < 0 || c >= m_lattice.cells()) throw InputError("coupling state does not match the lattice");
-        // Wrapped indices serve as unwrapped ones: they are only used to find neighbours.
-        m_cover.push_back({c, state.grains[k], static_cast<int>(c % nx), static_cast<int>(c / nx), true});
-        m_owner[c] = state.grains[k];
+        const std::int32_t p = state.grains[k];
+        if (c < 0 || c >= m_lattice.cells() || p < 0 || static_cast<std::size_t>(p) >= n)
+            throw InputError("coupling state does not match the lattice or the grains");
+        m_owner[c] = p;
         m_solid[c] = 1;
+        // The box that holds the grain's nodes, in wrapped indices: the next mapGrains scans it
+        // for the nodes the grain leaves.
+        const int i = static_cast<int>(c % nx), j = static_cast<int>(c / nx);
+        Box& box = m_box[p];
+        if (box.i0 > box.i1) box = {i, i, j, j};
+        box = {std::min(box.i0, i), std::max(box.i1, i), std::min(box.j0, j), std::max(box.j1, j)};
     }
 }
 
 void Coupling::renumberGrains(const std::vector<std::int32_t>& newToOld) {
     std::vector<std::int32_t> oldToNew(newToOld.size(), -1);
     for (std::size_t k = 0; k < newToOld.size(); ++k) oldToNew[newToOld[k]] = static_cast<std::int32_t>(k);
-    for (Cover& c : m_cover) {
-        c.grain = oldToNew[c.grain];
-        m_owner[c.cell] = c.grain;
+    for (std::int32_t& owner : m_owner)
+        if (owner >= 0) owner = oldToNew[owner];
+    if (m_box.size() == newToOld.size()) {
+        const std::vector<Box> old = m_box;
+        for (std::size_t k = 0; k < newToOld.size(); ++k) m_box[k] = old[newToOld[k]];
     }
     if (m_previousLoad.size() == 3 * newToOld.size()) {
         const std::vector<Real> old = m_previousLoad;

@@ -1,6 +1,7 @@
 // Resolved fluid-grain coupling: moving bounce-back or partially saturated cells, with unit conversion.
 #pragma once
 
+#include "solver/core/HugePageAllocator.h"
 #include "solver/core/Real.h"
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
@@ -90,7 +91,7 @@ public:
     /// Solid fraction per lattice cell (index lattice.index(i, j)): 0/1 for bounce-back, eps for PSM.
     const std::vector<Real>& solidFraction() const { return m_solid; }
     /// Grain covering each cell at the last mapGrains (-1: none); bounce-back only.
-    const std::vector<std::int32_t>& owners() const { return m_owner; }
+    const HugeVector<std::int32_t>& owners() const { return m_owner; }
     /// Number of bounce-back links or PSM cell entries of the last mapGrains.
     std::size_t boundaryCount() const;
     /// The parameters the coupling was built with.
@@ -112,20 +113,30 @@ private:
     /// a few thousand nodes of work (and much more when cores are oversubscribed).
     static constexpr long long kParallelMin = 4096;
 
-    struct Cover { long long cell; std::int32_t grain; int iu, ju; bool surface; }; // covered node, unwrapped
-    struct Link { long long fluid, solid; std::int32_t grain; int dir; Real q; long long behind; Real rx, ry; };
+    /// A node whose owner changes this step: a grain covers it, or its grain leaves it.
+    struct Change { long long cell; std::int32_t grain; int iu, ju; bool cover; };
+    /// Nodes a grain's scan visits, in unwrapped lattice indices (inclusive).
+    struct Box { int i0 = 0, i1 = -1, j0 = 0, j1 = -1; };
     struct PsmEntry { long long cell; std::int32_t grain; Real eps, rx, ry; };
 
     long long wrapCell(int iu, int ju) const;
+    /// Wrap (i, j) into the lattice across periodic sides; false when it lies outside.
+    bool wrapNode(int& i, int& j) const;
+    /// Moving-wall links of the surface node (iu, ju) at offset (sx, sy) from the centre of a
+    /// grain of radius r moving with (vx, vy, w); adds their momentum to the loads, returns their count.
+    int linkSurfaceNode(int iu, int ju, Real sx, Real sy, Real r, const long long solidSlots[lattice::kQ],
+                        Real vx, Real vy, Real w, Real& loadX, Real& loadY, Real& loadT);
     void grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) const;
     void surfaceVelocity(std::size_t p, Real rx, Real ry, Real& ux, Real& uy) const;
+    Box grainBox(std::size_t p) const;
     void resizeGrains();
     void mapBounceBack();
-    void coverNodes();
+    void findChanges();
+    void findGrainChanges(std::size_t p, std::vector<Change>& out) const;
+    void applyChanges();
     void refillUncovered();
-    int linksOf(const Cover& covered, Link* out) const;
-    void buildLinks();
-    void applyLinks();
+    /// Solid nodes and moving-wall links of grain p; returns its link count.
+    std::size_t bounceBackGrain(std::size_t p);
     void mapPsm();
     void collidePsm();
 
@@ -136,12 +147,14 @@ private:
     Real m_originX = 0, m_originY = 0; // lattice coordinate of node (0, 0)
     bool m_initialised = false;
 
-    std::vector<std::int32_t> m_owner;  // per cell: grain covering it, -1 none, -2 just uncovered
+    HugeVector<std::int32_t> m_owner;   // per cell: grain covering it, -1 none, -2 just uncovered
     std::vector<Real> m_solid;          // per cell: solid fraction (snapshot)
-    std::vector<Cover> m_cover, m_oldCover;
-    std::vector<Link> m_links;
-    std::vector<long long> m_linkStart; // per covered node: first link (prefix sums)
-    std::vector<Real> m_linkLoad;       // per link (or PSM entry): momentum and torque exchanged
+    std::vector<Box> m_box;             // bounce-back, per grain: the box its nodes lie in
+    std::vector<std::vector<Change>> m_threadChanges; // per thread, grains in order
+    std::vector<Change> m_uncovered;    // nodes left by their grain this step
+    std::size_t m_linkCount = 0;        // bounce-back links of the last mapGrains
+    std::vector<long long> m_linkStart; // PSM: first entry of each touched cell (prefix sums)
+    std::vector<Real> m_linkLoad;       // per PSM entry: momentum and torque exchanged
     std::vector<PsmEntry> m_psm;
     std::vector<long long> m_psmCells;  // cells touched by the last PSM mapping
     std::vector<Real> m_loadX, m_loadY, m_loadT; // lattice units, per grain
@@ -161,6 +174,19 @@ inline long long Coupling::wrapCell(int iu, int ju) const {
         ju = ((ju % ny) + ny) % ny;
     }
     return m_lattice.index(iu, ju);
+}
+
+inline bool Coupling::wrapNode(int& i, int& j) const {
+    const int nx = m_lattice.nx(), ny = m_lattice.ny();
+    if (i < 0 || i >= nx) {
+        if (!m_periodicX) return false;
+        i = ((i % nx) + nx) % nx;
+    }
+    if (j < 0 || j >= ny) {
+        if (!m_periodicY) return false;
+        j = ((j % ny) + ny) % ny;
+    }
+    return true;
 }
 
 inline void Coupling::grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) const {

@@ -142,12 +142,7 @@ void Lattice::postSlots(long long cell, long long slots[kQ]) const {
         for (int q = 0; q < kQ; ++q) slots[q] = kOpposite[q] * m_cells + cell;
         return;
     }
-    const int i = static_cast<int>(cell % m_nx), j = static_cast<int>(cell / m_nx);
-    if (i == 0 || j == 0 || i == m_nx - 1 || j == m_ny - 1) { // the neighbour may wrap
-        for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + neighbour(cell, q);
-        return;
-    }
-    for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + cell + kCx[q] + static_cast<long long>(kCy[q]) * m_nx;
+    postSlots(static_cast<int>(cell % m_nx), static_cast<int>(cell / m_nx), slots);
 }
 
 Real Lattice::density(long long cell) const {

@@ -95,6 +95,20 @@ public:
     long long inSlot(long long cell, int dir) const { return inSlotAt(cell, dir, m_step & 1); }
     /// postSlot() for all kQ directions of one cell at once (one division instead of kQ).
     void postSlots(long long cell, long long slots[kQ]) const;
+    /// postSlots() of the node at column i, row j (no division: for loops that walk the grid).
+    void postSlots(int i, int j, long long slots[kQ]) const;
+    /// postSlot() of the node at column i, row j (no division).
+    long long postSlot(int i, int j, int dir) const {
+        if (m_step & 1) return kOpposite[dir] * m_cells + index(i, j);
+        int in = i + kCx[dir], jn = j + kCy[dir];
+        in = in < 0 ? in + m_nx : in >= m_nx ? in - m_nx : in;
+        jn = jn < 0 ? jn + m_ny : jn >= m_ny ? jn - m_ny : jn;
+        return dir * m_cells + index(in, jn);
+    }
+    /// The population of direction `dir` held at `slot` (a postSlot/inSlot index for `dir`).
+    Real population(long long slot, int dir) const { (void)dir; return m_f[slot]; }
+    /// Store the population of direction `dir` at `slot`.
+    void setPopulation(long long slot, int dir, Real value) { (void)dir; m_f[slot] = value; }
     /// Record, in every following step, the incoming (streamed, pre-collision) populations of
     /// these cells after the boundary passes: partially saturated cells re-collide from them.
     void setRecordedCells(const std::vector<long long>& cells) { m_recordedCells.assign(cells.begin(), cells.end()); }
@@ -168,6 +182,19 @@ private:
     // Per owner: link fraction q(x, y, dir) where the link from (x, y) along dir meets the wall.
     std::vector<std::function<Real(Real, Real, int)>> m_shapes;
 };
+
+inline void Lattice::postSlots(int i, int j, long long slots[kQ]) const {
+    const long long cell = index(i, j);
+    if (m_step & 1) {
+        for (int q = 0; q < kQ; ++q) slots[q] = kOpposite[q] * m_cells + cell;
+        return;
+    }
+    if (i == 0 || j == 0 || i == m_nx - 1 || j == m_ny - 1) { // the neighbour may wrap
+        for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + neighbour(cell, q);
+        return;
+    }
+    for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + cell + kCx[q] + static_cast<long long>(kCy[q]) * m_nx;
+}
 
 template <class Field>
 void Lattice::initialise(const Field& field) {
