@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <fstream>
 
 namespace lbdem::cli {
@@ -52,6 +53,19 @@ void trimTimeSeries(const std::string& path, long long step) {
     io::writeFileAtomically(path, kept);
 }
 
+/// Outputs the base stress is averaged over (DESIGN §6: effective stress at the base over the
+/// front, averaged over 5 outputs).
+constexpr std::size_t kBaseStressWindow = 5;
+
+/// The last `count` values of a column of an existing timeseries.csv, oldest first.
+std::deque<double> lastValues(const std::string& path, const std::string& name, std::size_t count) {
+    std::ifstream probe(path);
+    if (!probe) return {};
+    const auto values = io::readTimeSeries(path).column(name);
+    const std::size_t first = values.size() > count ? values.size() - count : 0;
+    return std::deque<double>(values.begin() + static_cast<std::ptrdiff_t>(first), values.end());
+}
+
 } // namespace
 
 struct RunDriver::Progress {
@@ -63,6 +77,7 @@ struct RunDriver::Progress {
     long long firstStep = 0;
     double kePeak = 0, tKePeakOverTc = 0;
     std::map<std::string, double> lastMetrics;
+    std::deque<double> baseStress; // the last kBaseStressWindow values, as printed
     long long lastOutputStep = -1;
     Clock::time_point start = Clock::now();
 };
@@ -80,6 +95,15 @@ void RunDriver::writeOutput() {
     metrics["t_s"] = m_simulation.time();
     metrics["t_over_tc"] = m_simulation.timeOverTc();
     metrics["step"] = static_cast<double>(m_simulation.stepIndex());
+    if (const auto base = metrics.find("base_normal_stress_front_pa"); base != metrics.end()) {
+        // The mean of the printed values, so that a resumed run (which reads them back from
+        // timeseries.csv) continues the same sequence bit for bit.
+        p.baseStress.push_back(io::printedValue(base->second));
+        if (p.baseStress.size() > kBaseStressWindow) p.baseStress.pop_front();
+        double sum = 0;
+        for (double v : p.baseStress) sum += v;
+        metrics["base_normal_stress_front_avg5_pa"] = sum / static_cast<double>(p.baseStress.size());
+    }
     p.series->append(metrics);
     if (const auto ke = metrics.find("ke_over_ep0"); ke != metrics.end() && ke->second > p.kePeak) {
         p.kePeak = ke->second;
@@ -161,7 +185,10 @@ void RunDriver::run() {
     const double outputInterval = spec.run.output_interval_tc * plan.tc_s;
     const double checkpointInterval = spec.output.checkpoint_interval_tc * plan.tc_s;
     const std::string seriesPath = (m_options.dir / "timeseries.csv").string();
-    if (m_options.resumed) trimTimeSeries(seriesPath, m_simulation.stepIndex());
+    if (m_options.resumed) {
+        trimTimeSeries(seriesPath, m_simulation.stepIndex());
+        p.baseStress = lastValues(seriesPath, "base_normal_stress_front_pa", kBaseStressWindow);
+    }
     p.series = std::make_unique<io::TimeSeriesWriter>(seriesPath, m_options.resumed);
     p.firstStep = m_simulation.stepIndex();
     const double now = m_simulation.time();

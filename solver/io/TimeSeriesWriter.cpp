@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -31,6 +32,11 @@ std::string formatValue(double value) {
 }
 
 } // namespace
+
+double printedValue(double value) {
+    const std::string text = formatValue(value);
+    return text.empty() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(text.c_str(), nullptr);
+}
 
 TimeSeriesWriter::TimeSeriesWriter(const std::string& path, bool append) : m_path(path) {
     if (append) {

@@ -28,6 +28,9 @@ private:
     std::vector<std::string> m_columns;
 };
 
+/// The value as timeseries.csv prints it, read back (NaN for non-finite values).
+double printedValue(double value);
+
 /// Read a CSV written by TimeSeriesWriter: column names and rows of numbers (NaN where empty).
 struct TimeSeriesTable {
     std::vector<std::string> columns;

@@ -2,7 +2,7 @@
 # output time once and profiles/ one outline per output, numbered on across the resume; a short
 # submerged run also writes the failure-plane pore pressure. Usage: cmake -DLBDEM=... -DCASE=...
 # -DOUT=... -P this.
-file(REMOVE_RECURSE "${OUT}" "${OUT}_wet")
+file(REMOVE_RECURSE "${OUT}" "${OUT}_wet" "${OUT}_whole")
 
 # Fails unless FILE starts with HEADER and has at least MIN_ROWS further lines, each matching ROW.
 function(expect_csv file header min_rows row)
@@ -49,6 +49,23 @@ file(STRINGS "${OUT}/timeseries.csv" rows)
 list(LENGTH rows count)
 if(NOT count EQUAL 6) # header + t/tc = 0, 0.25, 0.5, 0.75, 1
     message(FATAL_ERROR "expected 6 lines in timeseries.csv, got ${count}:\n${rows}")
+endif()
+# The same run without the stop writes the same timeseries.csv byte for byte, the five-output
+# mean of the base stress included (a resumed run seeds it from the rows already written).
+file(REMOVE_RECURSE "${OUT}_whole")
+execute_process(COMMAND "${LBDEM}" run "${CASE}" --out "${OUT}_whole" --quiet ${small}
+                RESULT_VARIABLE code ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+    message(FATAL_ERROR "uninterrupted run failed (${code}): ${err}")
+endif()
+file(READ "${OUT}/timeseries.csv" resumedSeries)
+file(READ "${OUT}_whole/timeseries.csv" wholeSeries)
+if(NOT resumedSeries STREQUAL wholeSeries)
+    message(FATAL_ERROR "stopped and resumed, timeseries.csv differs from the uninterrupted run:\n"
+                        "${resumedSeries}\n---\n${wholeSeries}")
+endif()
+if(NOT resumedSeries MATCHES "base_normal_stress_front_avg5_pa")
+    message(FATAL_ERROR "timeseries.csv lacks base_normal_stress_front_avg5_pa")
 endif()
 foreach(index 000000 000001 000002 000003 000004)
     expect_csv("${OUT}/profiles/outline_${index}.csv" "x_m,y_m" 4 "^${metre},${metre}$")
