@@ -62,9 +62,8 @@ namespace {
 
 /// Everything the solid collision of one cell needs besides the cell's entries.
 struct PsmContext {
-    const lattice::Lattice* lattice;
-    const Real* incoming; // per cell group: the kQ populations the step streamed into the cell
-    Real* f;              // the lattice's populations (post-collision slots overwritten)
+    lattice::Lattice* lattice; // its post-collision populations are overwritten (setPopulation)
+    const Real* incoming;      // per cell group: the kQ populations the step streamed into the cell
     int nx;
     Real fx, fy;       // lattice body force (Guo), part of the fluid velocity
     Real tauMinusHalf;
@@ -123,7 +122,9 @@ static void psmCell(const PsmContext& ctx, const C& collide, const Real* incomin
         }
         addLoad(e, -px, -py, -(e->rx * py - e->ry * px));
     }
-    for (int q = 0; q < kQ; ++q) ctx.f[ctx.lattice->postSlot(cell, q)] = out[q];
+    long long slots[kQ];
+    ctx.lattice->postSlots(cell, slots);
+    for (int q = 0; q < kQ; ++q) ctx.lattice->setPopulation(slots[q], q, out[q]);
 }
 
 void Coupling::collidePsm() {
@@ -131,7 +132,7 @@ void Coupling::collidePsm() {
     const LatticeSetup& s = m_lattice.setup();
     const CollisionParams& p = s.collision;
     const Real* incoming = m_lattice.recordedIncoming().data();
-    PsmContext ctx{&m_lattice, incoming, m_lattice.populations().data(),
+    PsmContext ctx{&m_lattice, incoming,
                    m_lattice.nx(), s.fx, s.fy, p.tau - 0.5, m_params.psm_weight == PsmWeight::Nt,
                    s.left.type == SideType::ZouHeVelocity || s.left.type == SideType::ZouHePressure,
                    s.right.type == SideType::ZouHeVelocity || s.right.type == SideType::ZouHePressure};

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace lbdem::solver::lattice {
 
@@ -48,6 +49,16 @@ const char* collisionName(CollisionModel model) {
     return "?";
 }
 
+PopulationStorage storageFromName(const std::string& name) {
+    if (name == "double") return PopulationStorage::Double;
+    if (name == "float") return PopulationStorage::Float;
+    throw std::invalid_argument("unknown population storage '" + name + "'");
+}
+
+const char* storageName(PopulationStorage storage) {
+    return storage == PopulationStorage::Float ? "float" : "double";
+}
+
 Lattice::Lattice(const LatticeSetup& setup) : m_setup(setup) {
     const auto& s = m_setup;
     if (s.nx < 2 || s.ny < 2) throw InputError("the lattice needs at least 2 x 2 fluid nodes");
@@ -63,7 +74,9 @@ Lattice::Lattice(const LatticeSetup& setup) : m_setup(setup) {
     m_offsetX = isZouHe(s.left) ? 0.0 : 0.5;
     m_offsetY = 0.5;
     m_cells = static_cast<long long>(m_nx) * m_ny;
-    m_f.assign(static_cast<std::size_t>(kQ * m_cells), 0.0);
+    const auto values = static_cast<std::size_t>(kQ * m_cells);
+    if (s.storage == PopulationStorage::Float) m_f32.assign(values, 0.0f);
+    else m_f64.assign(values, 0.0);
     m_flags.assign(static_cast<std::size_t>(m_cells), kFluid);
     m_side.assign(static_cast<std::size_t>(m_cells), -1);
     buildSides();
@@ -126,6 +139,8 @@ void Lattice::buildWallLinks() {
                                                   : index(ci, (cj - kCy[in] + m_ny) % m_ny);
                 if (isFluid(from) && from != c) { sourceNode = from; sourceDir = mirror; }
             }
+            // The source direction has the incoming one's weight (its opposite or its mirror
+            // image), so float storage's shift w_i cancels and the link copies stored values.
             CopyLink link{};
             for (int parity = 0; parity < 2; ++parity) {
                 link.slot[parity] = inSlotAt(c, in, parity);
@@ -149,7 +164,7 @@ Real Lattice::density(long long cell) const {
     long long slots[kQ];
     postSlots(cell, slots);
     Real rho = 0;
-    for (int q = 0; q < kQ; ++q) rho += m_f[slots[q]];
+    for (int q = 0; q < kQ; ++q) rho += population(slots[q], q);
     return rho;
 }
 
@@ -158,7 +173,7 @@ void Lattice::velocity(long long cell, Real& ux, Real& uy) const {
     postSlots(cell, slots);
     Real rho = 0, jx = 0, jy = 0;
     for (int q = 0; q < kQ; ++q) {
-        const Real v = m_f[slots[q]];
+        const Real v = population(slots[q], q);
         rho += v;
         jx += kCx[q] * v;
         jy += kCy[q] * v;
@@ -177,13 +192,42 @@ Real Lattice::totalMass() const {
 void Lattice::resetSolids() {
     // Solid nodes are collided by the branch-free bulk kernel too; resetting them to rest keeps
     // their (unused) values finite. Only the slots the link pass writes are ever read.
-    Real* f = m_f.data();
 #pragma omp parallel for schedule(static) if (m_cells >= kParallelMinCells)
     for (std::size_t k = 0; k < m_solids.size(); ++k) {
         long long slots[kQ];
         postSlots(m_solids[k], slots);
-        for (int q = 0; q < kQ; ++q) f[slots[q]] = kW[q];
+        for (int q = 0; q < kQ; ++q) setPopulation(slots[q], q, kW[q]);
     }
+}
+
+std::vector<double> Lattice::exportPopulations() const {
+    std::vector<double> f(static_cast<std::size_t>(kQ * m_cells));
+    for (std::size_t k = 0; k < f.size(); ++k)
+        f[k] = population(static_cast<long long>(k), static_cast<int>(k / m_cells));
+    return f;
+}
+
+void Lattice::importPopulations(const std::vector<double>& f) {
+    if (f.size() != static_cast<std::size_t>(kQ * m_cells))
+        throw InputError("the populations to import (" + std::to_string(f.size()) + ") do not fit the lattice (" +
+                         std::to_string(kQ * m_cells) + ")");
+    for (std::size_t k = 0; k < f.size(); ++k)
+        setPopulation(static_cast<long long>(k), static_cast<int>(k / m_cells), f[k]);
+}
+
+std::vector<double> Lattice::exportStoredValues() const {
+    if (m_setup.storage == PopulationStorage::Float) return std::vector<double>(m_f32.begin(), m_f32.end());
+    return std::vector<double>(m_f64.begin(), m_f64.end());
+}
+
+void Lattice::importStoredValues(const std::vector<double>& values) {
+    if (values.size() != static_cast<std::size_t>(kQ * m_cells))
+        throw InputError("the stored populations to import (" + std::to_string(values.size()) +
+                         ") do not fit the lattice (" + std::to_string(kQ * m_cells) + ")");
+    if (m_setup.storage == PopulationStorage::Float)
+        for (std::size_t k = 0; k < values.size(); ++k) m_f32[k] = static_cast<float>(values[k]);
+    else
+        m_f64.assign(values.begin(), values.end());
 }
 
 } // namespace lbdem::solver::lattice

@@ -1,9 +1,11 @@
 // The D2Q9 lattice: distributions, node flags, boundary link lists and the fused time step.
 #pragma once
 
+#include "solver/core/HugePageAllocator.h"
 #include "solver/core/Real.h"
 #include "solver/lattice/Collision.h"
 #include "solver/lattice/D2Q9.h"
+#include "solver/lattice/PopulationStorage.h"
 
 #include <cstdint>
 #include <functional>
@@ -36,6 +38,7 @@ struct LatticeSetup {
     SideCondition left, right, bottom, top;
     CollisionParams collision;
     Real fx = 0, fy = 0; ///< uniform body force density (Guo forcing)
+    PopulationStorage storage = PopulationStorage::Double; ///< number format of the populations
 };
 
 /// Force and torque on one obstacle (momentum exchange), lattice units, about its reference point.
@@ -47,11 +50,12 @@ struct ObstacleLoad {
 /// updated in place by the AA pattern (Bailey et al. 2009): a step from an even step count
 /// reads and writes only the node's own nine values (storing f*_i in slot opp(i)); a step from
 /// an odd count reads the populations arriving from the neighbours and writes the results back
-/// where they came from. Both move 144 bytes per update with no write-allocate traffic and half
-/// the memory of a two-lattice scheme. Where a population sits therefore depends on the parity
-/// of the step count: postSlot() and inSlot() say where; nothing outside the lattice may index
-/// populations() directly. Boundary passes write the populations that solid neighbours send
-/// into the fluid before the bulk kernel, so the kernel itself has no branches.
+/// where they came from. Both move 144 bytes per update (72 with float storage) with no
+/// write-allocate traffic, in half the memory of a two-lattice scheme. Where a population sits
+/// therefore depends on the parity of the step count: postSlot() and inSlot() say where, and
+/// population() / setPopulation() are the only way in from outside, since a float slot holds
+/// f_i - w_i (PopulationStorage). Boundary passes write the populations that solid neighbours
+/// send into the fluid before the bulk kernel, so the kernel itself has no branches.
 class Lattice {
 public:
     /// Build the lattice at rest (rho = 1, u = 0) with its ghost layers and wall links.
@@ -63,6 +67,7 @@ public:
     int firstFluidX() const { return m_ghostLeft; }   ///< index of the first domain column
     int firstFluidY() const { return m_ghostBottom; } ///< index of the first domain row
     const LatticeSetup& setup() const { return m_setup; }
+    PopulationStorage storage() const { return m_setup.storage; } ///< number format of the populations
     /// x of node column i in lattice units, measured from the domain's left edge.
     Real nodeX(int i) const { return i - m_ghostLeft + m_offsetX; }
     /// y of node row j in lattice units, measured from the domain's bottom edge.
@@ -85,12 +90,12 @@ public:
     /// One fused stream-collide step: boundary links, bulk kernel, Zou-He nodes, solid reset.
     void step();
     long long stepCount() const { return m_step; }
-    /// Set the step counter (checkpoint restore; populations are restored through populations()).
+    /// Set the step counter (checkpoint restore; the populations through importStoredValues()).
     void setStepCount(long long step) { m_step = step; }
 
-    /// Index in populations() of the post-collision population f*_dir of `cell` after the last step.
+    /// Slot of the post-collision population f*_dir of `cell` after the last step.
     long long postSlot(long long cell, int dir) const { return postSlotAt(cell, dir, m_step & 1); }
-    /// Index in populations() that the next step reads as the population arriving at `cell`
+    /// Slot that the next step reads as the population arriving at `cell`
     /// along `dir` (sent from cell - c_dir): boundary passes write solid neighbours' values here.
     long long inSlot(long long cell, int dir) const { return inSlotAt(cell, dir, m_step & 1); }
     /// postSlot() for all kQ directions of one cell at once (one division instead of kQ).
@@ -106,9 +111,15 @@ public:
         return dir * m_cells + index(in, jn);
     }
     /// The population of direction `dir` held at `slot` (a postSlot/inSlot index for `dir`).
-    Real population(long long slot, int dir) const { (void)dir; return m_f[slot]; }
+    Real population(long long slot, int dir) const {
+        return m_setup.storage == PopulationStorage::Float ? StoredPopulation<float>::load(m_f32[slot], kW[dir])
+                                                           : m_f64[slot];
+    }
     /// Store the population of direction `dir` at `slot`.
-    void setPopulation(long long slot, int dir, Real value) { (void)dir; m_f[slot] = value; }
+    void setPopulation(long long slot, int dir, Real value) {
+        if (m_setup.storage == PopulationStorage::Float) m_f32[slot] = StoredPopulation<float>::store(value, kW[dir]);
+        else m_f64[slot] = value;
+    }
     /// Record, in every following step, the incoming (streamed, pre-collision) populations of
     /// these cells after the boundary passes: partially saturated cells re-collide from them.
     void setRecordedCells(const std::vector<long long>& cells) { m_recordedCells.assign(cells.begin(), cells.end()); }
@@ -123,9 +134,16 @@ public:
     Real totalMass() const;
     /// Load on obstacle `owner` from the last step.
     const ObstacleLoad& obstacleLoad(int owner) const { return m_loads.at(owner); }
-    /// The population array (layout per postSlot/inSlot; saved and restored with stepCount()).
-    const std::vector<Real>& populations() const { return m_f; }
-    std::vector<Real>& populations() { return m_f; }
+    /// Every population f_i as a double, in slot order (layout per postSlot/inSlot at stepCount()).
+    std::vector<double> exportPopulations() const;
+    /// Replace every population from exportPopulations()'s layout; throws InputError on a size mismatch.
+    void importPopulations(const std::vector<double>& f);
+    /// The stored numbers exactly, as doubles in slot order: f_i for double storage, f_i - w_i for
+    /// float (a checkpoint's bit-exact image; f_i itself may round differently on the way back).
+    std::vector<double> exportStoredValues() const;
+    /// Replace the stored numbers from exportStoredValues() of a lattice with the same storage;
+    /// throws InputError on a size mismatch.
+    void importStoredValues(const std::vector<double>& values);
     /// Number of boundary links of each kind (copy, pressure, obstacle).
     std::size_t linkCount() const { return m_copyLinks.size() + m_pressureLinks.size() + m_obstacleLinks.size(); }
 
@@ -167,10 +185,11 @@ private:
     int m_nx = 0, m_ny = 0, m_ghostLeft = 0, m_ghostBottom = 0;
     Real m_offsetX = 0.5, m_offsetY = 0.5;
     long long m_cells = 0, m_step = 0;
-    std::vector<Real> m_f;                    // populations, in place (AA pattern)
+    HugeVector<double> m_f64;                 // double storage: populations, in place (AA pattern)
+    HugeVector<float> m_f32;                  // float storage: f_i - w_i, in place; one of the two is empty
     std::vector<long long> m_recordedCells;   // cells whose incoming populations each step records
     std::vector<Real> m_recorded;             // kQ per recorded cell
-    std::vector<std::uint8_t> m_flags;
+    HugeVector<std::uint8_t> m_flags;
     std::vector<int> m_side;                  // for ghost nodes: which side (0 L, 1 R, 2 B, 3 T)
     std::vector<CopyLink> m_copyLinks;
     std::vector<PressureLink> m_pressureLinks;
@@ -203,7 +222,7 @@ void Lattice::initialise(const Field& field) {
             const long long c = index(i, j);
             Real rho = 1, ux = 0, uy = 0;
             if (isFluid(c)) field(nodeX(i), nodeY(j), rho, ux, uy);
-            for (int q = 0; q < kQ; ++q) m_f[postSlot(c, q)] = equilibrium(q, rho, ux, uy);
+            for (int q = 0; q < kQ; ++q) setPopulation(postSlot(c, q), q, equilibrium(q, rho, ux, uy));
         }
 }
 

@@ -7,35 +7,45 @@ namespace lbdem::solver::lattice {
 
 namespace {
 
+/// Load the stored value v of a direction of weight kW[Q] as a population (PopulationStorage).
+template <int Q, class S>
+LBDEM_KERNEL_INLINE Real load(S v) { return StoredPopulation<S>::load(v, kW[Q]); }
+/// The stored value of population f of a direction of weight kW[Q].
+template <int Q, class S>
+LBDEM_KERNEL_INLINE S store(Real f) { return StoredPopulation<S>::store(f, kW[Q]); }
+
 /// AA step from an even step count: every node reads its own nine values (the populations that
-/// arrived, f_i in slot i), collides, and stores f*_i in its own slot opp(i).
+/// arrived, f_i in slot i), collides, and stores f*_i in its own slot opp(i). S is the stored
+/// number (double, or float holding f_i - w_i): values are widened and unshifted on the way in,
+/// collided in double and shifted and rounded on the way out.
 /// Pre: the boundary passes have filled the slots that solid neighbours send into the fluid.
-template <class C>
-void collideInPlace(Real* __restrict f, int nx, int ny, long long cells, const C& collide) {
+template <class S, class C>
+void collideInPlace(S* __restrict f, int nx, int ny, long long cells, const C& collide) {
 #pragma omp parallel for schedule(static) if (cells >= kParallelMinCells)
     for (int y = 0; y < ny; ++y) {
         const long long row = static_cast<long long>(y) * nx;
-        Real* __restrict p0 = f + row;
-        Real* __restrict p1 = f + cells + row;
-        Real* __restrict p2 = f + 2 * cells + row;
-        Real* __restrict p3 = f + 3 * cells + row;
-        Real* __restrict p4 = f + 4 * cells + row;
-        Real* __restrict p5 = f + 5 * cells + row;
-        Real* __restrict p6 = f + 6 * cells + row;
-        Real* __restrict p7 = f + 7 * cells + row;
-        Real* __restrict p8 = f + 8 * cells + row;
+        S* __restrict p0 = f + row;
+        S* __restrict p1 = f + cells + row;
+        S* __restrict p2 = f + 2 * cells + row;
+        S* __restrict p3 = f + 3 * cells + row;
+        S* __restrict p4 = f + 4 * cells + row;
+        S* __restrict p5 = f + 5 * cells + row;
+        S* __restrict p6 = f + 6 * cells + row;
+        S* __restrict p7 = f + 7 * cells + row;
+        S* __restrict p8 = f + 8 * cells + row;
         auto node = [&](int x) __attribute__((always_inline)) {
-            Real g[9] = {p0[x], p1[x], p2[x], p3[x], p4[x], p5[x], p6[x], p7[x], p8[x]};
+            Real g[9] = {load<0>(p0[x]), load<1>(p1[x]), load<2>(p2[x]), load<3>(p3[x]), load<4>(p4[x]),
+                         load<5>(p5[x]), load<6>(p6[x]), load<7>(p7[x]), load<8>(p8[x])};
             collide(g);
-            p0[x] = g[0];
-            p3[x] = g[1];
-            p4[x] = g[2];
-            p1[x] = g[3];
-            p2[x] = g[4];
-            p7[x] = g[5];
-            p8[x] = g[6];
-            p5[x] = g[7];
-            p6[x] = g[8];
+            p0[x] = store<0, S>(g[0]);
+            p3[x] = store<1, S>(g[1]);
+            p4[x] = store<2, S>(g[2]);
+            p1[x] = store<3, S>(g[3]);
+            p2[x] = store<4, S>(g[4]);
+            p7[x] = store<5, S>(g[5]);
+            p8[x] = store<6, S>(g[6]);
+            p5[x] = store<7, S>(g[7]);
+            p6[x] = store<8, S>(g[8]);
         };
         // Each node touches only its own values, so the loop carries no dependence.
 #pragma omp simd
@@ -47,34 +57,36 @@ void collideInPlace(Real* __restrict f, int nx, int ny, long long cells, const C
 /// opp(i) of x - c_i (where the neighbour left it), collides, and writes f*_i to slot i of
 /// x + c_i. The nine values read and written are the same nine, owned by x alone, so the update
 /// is in place and free of races between nodes, rows and threads. Periodic wrap on all sides.
-template <class C>
-void streamCollideInPlace(Real* __restrict f, int nx, int ny, long long cells, const C& collide) {
+/// Stored values convert as in collideInPlace.
+template <class S, class C>
+void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, const C& collide) {
 #pragma omp parallel for schedule(static) if (cells >= kParallelMinCells)
     for (int y = 0; y < ny; ++y) {
         const long long row = static_cast<long long>(y) * nx;
         const long long rowN = static_cast<long long>(y + 1 == ny ? 0 : y + 1) * nx;
         const long long rowS = static_cast<long long>(y == 0 ? ny - 1 : y - 1) * nx;
-        Real* __restrict p0 = f + row;              // slot i of x + c_i, by direction i
-        Real* __restrict p1 = f + cells + row;
-        Real* __restrict p2 = f + 2 * cells + rowN;
-        Real* __restrict p3 = f + 3 * cells + row;
-        Real* __restrict p4 = f + 4 * cells + rowS;
-        Real* __restrict p5 = f + 5 * cells + rowN;
-        Real* __restrict p6 = f + 6 * cells + rowN;
-        Real* __restrict p7 = f + 7 * cells + rowS;
-        Real* __restrict p8 = f + 8 * cells + rowS;
+        S* __restrict p0 = f + row;              // slot i of x + c_i, by direction i
+        S* __restrict p1 = f + cells + row;
+        S* __restrict p2 = f + 2 * cells + rowN;
+        S* __restrict p3 = f + 3 * cells + row;
+        S* __restrict p4 = f + 4 * cells + rowS;
+        S* __restrict p5 = f + 5 * cells + rowN;
+        S* __restrict p6 = f + 6 * cells + rowN;
+        S* __restrict p7 = f + 7 * cells + rowS;
+        S* __restrict p8 = f + 8 * cells + rowS;
         auto node = [&](int x, int xm, int xp) __attribute__((always_inline)) {
-            Real g[9] = {p0[x], p3[xm], p4[x], p1[xp], p2[x], p7[xm], p8[xp], p5[xp], p6[xm]};
+            Real g[9] = {load<0>(p0[x]), load<1>(p3[xm]), load<2>(p4[x]), load<3>(p1[xp]), load<4>(p2[x]),
+                         load<5>(p7[xm]), load<6>(p8[xp]), load<7>(p5[xp]), load<8>(p6[xm])};
             collide(g);
-            p0[x] = g[0];
-            p1[xp] = g[1];
-            p2[x] = g[2];
-            p3[xm] = g[3];
-            p4[x] = g[4];
-            p5[xp] = g[5];
-            p6[xm] = g[6];
-            p7[xm] = g[7];
-            p8[xp] = g[8];
+            p0[x] = store<0, S>(g[0]);
+            p1[xp] = store<1, S>(g[1]);
+            p2[x] = store<2, S>(g[2]);
+            p3[xm] = store<3, S>(g[3]);
+            p4[x] = store<4, S>(g[4]);
+            p5[xp] = store<5, S>(g[5]);
+            p6[xm] = store<6, S>(g[6]);
+            p7[xm] = store<7, S>(g[7]);
+            p8[xp] = store<8, S>(g[8]);
         };
         node(0, nx - 1, 1 % nx);
 #pragma omp simd
@@ -83,15 +95,29 @@ void streamCollideInPlace(Real* __restrict f, int nx, int ny, long long cells, c
     }
 }
 
+/// One AA step of the bulk kernel on the stored values f, from an odd or an even step count.
+template <class S, class C>
+void aaStep(S* f, bool odd, int nx, int ny, long long cells, const C& collide) {
+    if (odd) streamCollideInPlace(f, nx, ny, cells, collide);
+    else collideInPlace(f, nx, ny, cells, collide);
+}
+
+/// f[slot] = f[source] + add for every copy link, on the stored values: source and slot hold
+/// directions of one weight, so float storage's shift cancels (Lattice::buildWallLinks).
+template <class S, class Links>
+void applyCopyLinks(S* f, const Links& links, long long parity, bool parallel) {
+#pragma omp parallel for schedule(static) if (parallel)
+    for (std::size_t k = 0; k < links.size(); ++k)
+        f[links[k].slot[parity]] = static_cast<S>(f[links[k].source[parity]] + links[k].add);
+}
+
 } // namespace
 
 void Lattice::applyLinks() {
-    Real* f = m_f.data();
     const long long parity = m_step & 1;
-    const auto& copies = m_copyLinks;
-#pragma omp parallel for schedule(static) if (m_cells >= kParallelMinCells)
-    for (std::size_t k = 0; k < copies.size(); ++k)
-        f[copies[k].slot[parity]] = f[copies[k].source[parity]] + copies[k].add;
+    const bool parallel = m_cells >= kParallelMinCells;
+    if (m_setup.storage == PopulationStorage::Float) applyCopyLinks(m_f32.data(), m_copyLinks, parity, parallel);
+    else applyCopyLinks(m_f64.data(), m_copyLinks, parity, parallel);
     // Constant pressure (anti-bounce-back, Ginzburg et al. 2008): f_in = -f_out + 2 f_in^eq,sym(rho_b, u).
     for (const auto& link : m_pressureLinks) {
         Real ux, uy;
@@ -99,30 +125,30 @@ void Lattice::applyLinks() {
         const int in = kOpposite[link.dir];
         const Real cu = kCx[in] * ux + kCy[in] * uy;
         const Real sym = kW[in] * link.rho * (1.0 + 4.5 * cu * cu - 1.5 * (ux * ux + uy * uy));
-        f[inSlot(link.node, in)] = -f[postSlot(link.node, link.dir)] + 2.0 * sym;
+        // On the populations, not the stored values: the shift would not cancel in -f_out + 2 sym.
+        setPopulation(inSlot(link.node, in), in, -population(postSlot(link.node, link.dir), link.dir) + 2.0 * sym);
     }
     // Interpolated bounce-back, Bouzidi, Firdaouss & Lallemand (2001), linear two-branch form.
     for (const auto& link : m_obstacleLinks) {
         const int d = link.dir, in = kOpposite[d];
-        const Real out = f[postSlot(link.node, d)];
+        const Real out = population(postSlot(link.node, d), d);
         Real value;
         if (link.q < 0.5 && link.interior)
-            value = 2 * link.q * out + (1 - 2 * link.q) * f[postSlot(neighbour(link.node, in), d)];
+            value = 2 * link.q * out + (1 - 2 * link.q) * population(postSlot(neighbour(link.node, in), d), d);
         else if (link.q < 0.5)
             value = out;
         else
-            value = out / (2 * link.q) + (2 * link.q - 1) / (2 * link.q) * f[postSlot(link.node, in)];
-        f[inSlot(link.node, in)] = value;
+            value = out / (2 * link.q) + (2 * link.q - 1) / (2 * link.q) * population(postSlot(link.node, in), in);
+        setPopulation(inSlot(link.node, in), in, value);
     }
 }
 
 void Lattice::computeLoads() {
     for (auto& load : m_loads) load = ObstacleLoad{};
-    const Real* f = m_f.data();
     for (const auto& link : m_obstacleLinks) {
         // Momentum exchange (Ladd 1994): the wall receives (f_out + f_in) c_out per link.
-        const int d = link.dir;
-        const Real push = f[postSlot(link.node, d)] + f[inSlot(link.node, kOpposite[d])];
+        const int d = link.dir, in = kOpposite[d];
+        const Real push = population(postSlot(link.node, d), d) + population(inSlot(link.node, in), in);
         const Real dfx = push * kCx[d], dfy = push * kCy[d];
         const int i = static_cast<int>(link.node % m_nx), j = static_cast<int>(link.node / m_nx);
         const Real rx = nodeX(i) + link.q * kCx[d] - m_owners[link.owner].cx;
@@ -144,7 +170,7 @@ void Lattice::applyZouHe() {
         const Real sign = s == 0 ? 1.0 : -1.0; // inward normal along x
         for (long long c : m_zouHeCells[s]) {
             Real f[kQ];
-            for (int q = 0; q < kQ; ++q) f[q] = m_f[inSlot(c, q)];
+            for (int q = 0; q < kQ; ++q) f[q] = population(inSlot(c, q), q);
             // Known: rest, N, S and the three leaving the domain (W, NW, SW on the left).
             const int out = s == 0 ? 3 : 1, outN = s == 0 ? 6 : 5, outS = s == 0 ? 7 : 8;
             const Real tangential = f[0] + f[2] + f[4], leaving = f[out] + f[outN] + f[outS];
@@ -159,9 +185,9 @@ void Lattice::applyZouHe() {
                 un = 1 - (tangential + 2 * leaving) / rho;
             }
             const int in = kOpposite[out], inN = kOpposite[outS], inS = kOpposite[outN];
-            m_f[inSlot(c, in)] = f[out] + 2.0 / 3.0 * rho * un;
-            m_f[inSlot(c, inN)] = f[outS] - 0.5 * (f[2] - f[4]) + rho * un / 6.0;
-            m_f[inSlot(c, inS)] = f[outN] + 0.5 * (f[2] - f[4]) + rho * un / 6.0;
+            setPopulation(inSlot(c, in), in, f[out] + 2.0 / 3.0 * rho * un);
+            setPopulation(inSlot(c, inN), inN, f[outS] - 0.5 * (f[2] - f[4]) + rho * un / 6.0);
+            setPopulation(inSlot(c, inS), inS, f[outN] + 0.5 * (f[2] - f[4]) + rho * un / 6.0);
         }
     }
 }
@@ -169,7 +195,7 @@ void Lattice::applyZouHe() {
 void Lattice::recordIncoming() {
     m_recorded.resize(m_recordedCells.size() * kQ); // keeps its capacity between steps
     for (std::size_t k = 0; k < m_recordedCells.size(); ++k)
-        for (int q = 0; q < kQ; ++q) m_recorded[k * kQ + q] = m_f[inSlot(m_recordedCells[k], q)];
+        for (int q = 0; q < kQ; ++q) m_recorded[k * kQ + q] = population(inSlot(m_recordedCells[k], q), q);
 }
 
 template <class C>
@@ -178,8 +204,8 @@ void Lattice::runStep(const C& collide) {
     if (!m_obstacleLinks.empty()) computeLoads();
     applyZouHe();
     recordIncoming();
-    if (m_step & 1) streamCollideInPlace(m_f.data(), m_nx, m_ny, m_cells, collide);
-    else collideInPlace(m_f.data(), m_nx, m_ny, m_cells, collide);
+    if (m_setup.storage == PopulationStorage::Float) aaStep(m_f32.data(), m_step & 1, m_nx, m_ny, m_cells, collide);
+    else aaStep(m_f64.data(), m_step & 1, m_nx, m_ny, m_cells, collide);
     ++m_step;
     resetSolids();
 }

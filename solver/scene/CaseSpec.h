@@ -30,7 +30,7 @@ struct FluidSpec {
     double s_e = 1.64;             ///< MRT rate of the energy moment
     double s_eps = 1.54;           ///< MRT rate of the energy-squared moment
     double s_q = 1.9;              ///< MRT rate of the energy-flux moments
-    std::string storage = "double"; ///< precision of the distributions (double is the one offered)
+    std::string storage = "double"; ///< number format of the stored distributions: double or float
 };
 
 /// The granular column and the contact law of its discs.

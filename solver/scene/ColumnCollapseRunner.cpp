@@ -39,6 +39,7 @@ lattice::LatticeSetup columnLatticeSetup(const CaseSpec& spec, const Plan& plan)
     setup.nx = plan.nx;
     setup.ny = plan.ny;
     setup.collision = collisionOf(spec, plan.tau);
+    setup.storage = lattice::storageFromName(spec.fluid.storage);
     setup.left.type = setup.bottom.type = lattice::SideType::Wall; // no-slip floor and back wall
     setup.top.type = sideOf(spec.domain.top);
     setup.right.type = sideOf(spec.domain.right);

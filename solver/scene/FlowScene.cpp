@@ -21,6 +21,7 @@ lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const Flow
     setup.nx = s.nx;
     setup.ny = s.ny;
     setup.collision = collisionOf(spec, s.tau);
+    setup.storage = lattice::storageFromName(spec.fluid.storage);
     switch (kind) {
     case SceneKind::Poiseuille: {
         // Body-force channel: F = 8 nu U / H^2 gives centreline velocity U between walls H apart.

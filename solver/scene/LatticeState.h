@@ -6,11 +6,12 @@
 
 namespace lbdem::solver {
 
-/// Save the populations and step count into archive ("lattice/...").
+/// Save the stored populations (exactly), their storage and the step count into archive ("lattice/...").
 void saveLatticeState(const lattice::Lattice& lattice, StateArchive& archive);
 
 /// Restore a state saved by saveLatticeState into a lattice built from the same case; throws
-/// std::runtime_error when the sizes or the population layout do not match.
+/// std::runtime_error when the sizes or the population layout do not match, InputError when
+/// the population storage (fluid.storage) does not.
 void restoreLatticeState(const StateArchive& archive, lattice::Lattice& lattice);
 
 } // namespace lbdem::solver

@@ -122,7 +122,7 @@ Plan makePlan(const CaseSpec& spec) {
     }
 
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
-    const std::size_t bytesPerValue = sizeof(Real);
+    const std::size_t bytesPerValue = spec.fluid.storage == "float" ? sizeof(float) : sizeof(double);
     // One distribution set (updated in place), one flag byte, a side index and one solid
     // fraction per node; the coupling's owner map; ~256 B per grain.
     plan.memory_bytes = static_cast<std::size_t>(nodes) * (kQ * bytesPerValue + 1 + 4 + 8 + 4) +

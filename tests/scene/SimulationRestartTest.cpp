@@ -1,4 +1,5 @@
 // Checkpoint/restart: 2N steps equal N steps, save, load into a new Simulation, N steps — bit for bit.
+#include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/Checkpoint.h"
@@ -14,11 +15,12 @@ namespace {
 
 /// A small loose column (150 discs; too few to reach the dense 0.83) in a small domain, dry or
 /// submerged, quick enough for the default suite.
-solver::CaseSpec smallColumn(bool submerged, const std::string& method = "bounce_back") {
+solver::CaseSpec smallColumn(bool submerged, const std::string& method = "bounce_back",
+                             const std::string& storage = "double") {
     return io::parseCase("schema = 1\nname = \"restart\"\n", "restart.toml",
                          {"grains.count=150", "grains.packing=0.79", "domain.width_m=0.08", "domain.height_m=0.04",
                           "fluid.enabled=" + std::string(submerged ? "true" : "false"),
-                          "fluid.resolution=4", "coupling.method=" + method});
+                          "fluid.resolution=4", "coupling.method=" + method, "fluid.storage=" + storage});
 }
 
 bool sameArchive(const solver::StateArchive& a, const solver::StateArchive& b, QString& why) {
@@ -47,24 +49,30 @@ private slots:
     void restartIsBitForBit();
     void dryColumnAllocatesNoFluid();
     void olderPopulationLayoutIsRefused();
+    void storageMismatchIsRefused();
 };
 
 void SimulationRestartTest::restartIsBitForBit_data() {
     QTest::addColumn<bool>("submerged");
     QTest::addColumn<QString>("method");
     QTest::addColumn<int>("steps");
-    QTest::newRow("dry") << false << "bounce_back" << 400;
-    QTest::newRow("submerged bounce-back") << true << "bounce_back" << 20;
+    QTest::addColumn<QString>("storage");
+    QTest::newRow("dry") << false << "bounce_back" << 400 << "double";
+    QTest::newRow("submerged bounce-back") << true << "bounce_back" << 20 << "double";
     // An odd step count: the in-place (AA) lattice keeps its populations in the other layout.
-    QTest::newRow("submerged bounce-back, odd step") << true << "bounce_back" << 21;
-    QTest::newRow("submerged psm") << true << "psm" << 20;
+    QTest::newRow("submerged bounce-back, odd step") << true << "bounce_back" << 21 << "double";
+    QTest::newRow("submerged psm") << true << "psm" << 20 << "double";
+    // Float storage: the checkpoint keeps the stored f_i - w_i exactly (widened to double).
+    QTest::newRow("float storage, bounce-back, odd step") << true << "bounce_back" << 21 << "float";
+    QTest::newRow("float storage, psm") << true << "psm" << 20 << "float";
 }
 
 void SimulationRestartTest::restartIsBitForBit() {
     QFETCH(bool, submerged);
     QFETCH(QString, method);
     QFETCH(int, steps);
-    const auto spec = smallColumn(submerged, method.toStdString());
+    QFETCH(QString, storage);
+    const auto spec = smallColumn(submerged, method.toStdString(), storage.toStdString());
     const auto plan = solver::makePlan(spec);
 
     solver::Simulation straight(spec, plan);
@@ -113,6 +121,23 @@ void SimulationRestartTest::olderPopulationLayoutIsRefused() {
         QFAIL("a checkpoint without the population layout was accepted");
     } catch (const std::runtime_error& error) {
         QVERIFY2(std::string(error.what()).find("older lbdem") != std::string::npos, error.what());
+    }
+}
+
+void SimulationRestartTest::storageMismatchIsRefused() {
+    // Float storage's checkpoint holds f_i - w_i; read into double storage it would be wrong by
+    // w_i everywhere, so a case whose fluid.storage differs must refuse it and say why.
+    const auto single = smallColumn(true, "bounce_back", "float");
+    solver::Simulation first(single, solver::makePlan(single));
+    first.step();
+    const auto state = first.saveState();
+    const auto spec = smallColumn(true);
+    solver::Simulation resumed(spec, solver::makePlan(spec));
+    try {
+        resumed.restoreState(state);
+        QFAIL("a float-storage checkpoint was restored into double storage");
+    } catch (const solver::InputError& error) {
+        QVERIFY2(std::string(error.what()).find("fluid.storage = \"float\"") != std::string::npos, error.what());
     }
 }
 

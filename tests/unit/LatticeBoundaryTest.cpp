@@ -127,7 +127,8 @@ void LatticeBoundaryTest::zouHeImposesVelocityAndPressure() {
     Lattice lattice(setup);
     // Start from the expected stream: Zou-He sides reflect sound, so a start from rest rings.
     lattice.initialise([](double, double, double& rho, double& ux, double& uy) { rho = 1; ux = 0.04; uy = 0; });
-    lattice.populations()[lattice.index(5, 3)] += 1e-3; // a disturbance the boundaries must clear
+    const long long slot = lattice.index(5, 3); // the rest population of node (5, 3)
+    lattice.setPopulation(slot, 0, lattice.population(slot, 0) + 1e-3); // a disturbance the boundaries must clear
     for (int s = 0; s < 4000; ++s) lattice.step();
     for (int j = lattice.firstFluidY(); j < lattice.firstFluidY() + setup.ny; ++j) {
         double ux, uy;
@@ -194,7 +195,7 @@ void LatticeBoundaryTest::guardNamesStepAndCause() {
     Lattice lattice(setup);
     StabilityGuard guard(1e-3);
     guard.check(lattice); // at rest: fine
-    lattice.populations()[lattice.index(3, 4)] = std::numeric_limits<double>::quiet_NaN();
+    lattice.setPopulation(lattice.index(3, 4), 0, std::numeric_limits<double>::quiet_NaN()); // rest population of (3, 4)
     try {
         guard.check(lattice);
         QFAIL("the guard did not stop a NaN");
