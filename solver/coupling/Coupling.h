@@ -164,16 +164,7 @@ private:
 // Inline helpers of the per-node loops (they run once per covered node or link).
 
 inline long long Coupling::wrapCell(int iu, int ju) const {
-    const int nx = m_lattice.nx(), ny = m_lattice.ny();
-    if (iu < 0 || iu >= nx) {
-        if (!m_periodicX) return -1;
-        iu = ((iu % nx) + nx) % nx;
-    }
-    if (ju < 0 || ju >= ny) {
-        if (!m_periodicY) return -1;
-        ju = ((ju % ny) + ny) % ny;
-    }
-    return m_lattice.index(iu, ju);
+    return wrapNode(iu, ju) ? m_lattice.index(iu, ju) : -1;
 }
 
 inline bool Coupling::wrapNode(int& i, int& j) const {

@@ -104,11 +104,7 @@ public:
     void postSlots(int i, int j, long long slots[kQ]) const;
     /// postSlot() of the node at column i, row j (no division).
     long long postSlot(int i, int j, int dir) const {
-        if (m_step & 1) return kOpposite[dir] * m_cells + index(i, j);
-        int in = i + kCx[dir], jn = j + kCy[dir];
-        in = in < 0 ? in + m_nx : in >= m_nx ? in - m_nx : in;
-        jn = jn < 0 ? jn + m_ny : jn >= m_ny ? jn - m_ny : jn;
-        return dir * m_cells + index(in, jn);
+        return m_step & 1 ? kOpposite[dir] * m_cells + index(i, j) : dir * m_cells + neighbour(i, j, dir);
     }
     /// The population of direction `dir` held at `slot` (a postSlot/inSlot index for `dir`).
     Real population(long long slot, int dir) const {
@@ -168,7 +164,10 @@ private:
     }
     /// The node at cell + c_dir, wrapping around the domain.
     long long neighbour(long long cell, int dir) const {
-        const int i = static_cast<int>(cell % m_nx), j = static_cast<int>(cell / m_nx);
+        return neighbour(static_cast<int>(cell % m_nx), static_cast<int>(cell / m_nx), dir);
+    }
+    /// The node at (i, j) + c_dir, wrapping around the domain.
+    long long neighbour(int i, int j, int dir) const {
         int in = i + kCx[dir], jn = j + kCy[dir];
         in = in < 0 ? in + m_nx : in >= m_nx ? in - m_nx : in;
         jn = jn < 0 ? jn + m_ny : jn >= m_ny ? jn - m_ny : jn;
@@ -209,7 +208,7 @@ inline void Lattice::postSlots(int i, int j, long long slots[kQ]) const {
         return;
     }
     if (i == 0 || j == 0 || i == m_nx - 1 || j == m_ny - 1) { // the neighbour may wrap
-        for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + neighbour(cell, q);
+        for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + neighbour(i, j, q);
         return;
     }
     for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + cell + kCx[q] + static_cast<long long>(kCy[q]) * m_nx;
