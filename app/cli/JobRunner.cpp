@@ -41,24 +41,42 @@ pid_t spawnJob(const Job& job) {
 } // namespace
 
 std::vector<JobResult> runJobs(const std::vector<Job>& jobs, int maxParallel,
-                               const std::function<void(const JobResult&, int, int)>& onFinished) {
+                               const std::function<void(const JobResult&, int, int)>& onFinished,
+                               const JobTick& onTick, double tickPeriodS) {
+    constexpr auto kPollPeriod = std::chrono::milliseconds(200);
     std::vector<JobResult> results(jobs.size());
     std::map<pid_t, std::pair<std::size_t, Clock::time_point>> running;
     std::size_t next = 0;
     int done = 0;
     const int total = static_cast<int>(jobs.size());
+    const auto tickPeriod = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(tickPeriodS));
+    auto nextTick = Clock::now() + tickPeriod;
     while (next < jobs.size() || !running.empty()) {
         while (next < jobs.size() && static_cast<int>(running.size()) < std::max(1, maxParallel)) {
             running[spawnJob(jobs[next])] = {next, Clock::now()};
             ++next;
         }
         int status = 0;
-        const pid_t pid = ::waitpid(-1, &status, 0);
+        const pid_t pid = ::waitpid(-1, &status, onTick ? WNOHANG : 0);
         if (pid < 0) break;
+        if (pid == 0) { // nothing ended yet (only when ticking)
+            if (Clock::now() >= nextTick) {
+                std::vector<RunningJob> going;
+                for (const auto& [child, job] : running)
+                    going.push_back({job.first, std::chrono::duration<double>(Clock::now() - job.second).count()});
+                std::sort(going.begin(), going.end(),
+                          [](const RunningJob& a, const RunningJob& b) { return a.index < b.index; });
+                onTick(going);
+                nextTick = Clock::now() + tickPeriod;
+            }
+            std::this_thread::sleep_for(kPollPeriod);
+            continue;
+        }
         const auto found = running.find(pid);
         if (found == running.end()) continue;
         auto& result = results[found->second.first];
         result.label = jobs[found->second.first].label;
+        result.index = found->second.first;
         result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
         result.wall_s = std::chrono::duration<double>(Clock::now() - found->second.second).count();
         running.erase(found);

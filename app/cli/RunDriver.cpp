@@ -1,5 +1,6 @@
 // The run loop of `lbdem run` and `lbdem resume`.
 #include "app/cli/RunDriver.h"
+#include "app/cli/Duration.h"
 
 #include "solver/core/InputError.h"
 #include "solver/io/CaseWriter.h"
@@ -24,17 +25,6 @@ constexpr double kProgressPeriodS = 2.0;
 
 double seconds(Clock::time_point since) {
     return std::chrono::duration<double>(Clock::now() - since).count();
-}
-
-std::string formatDuration(double s) {
-    char buffer[32];
-    if (s >= 3600)
-        std::snprintf(buffer, sizeof buffer, "%dh%02dm", int(s / 3600), int(std::fmod(s, 3600) / 60));
-    else if (s >= 60)
-        std::snprintf(buffer, sizeof buffer, "%dm%02ds", int(s / 60), int(std::fmod(s, 60)));
-    else
-        std::snprintf(buffer, sizeof buffer, "%.0fs", s);
-    return buffer;
 }
 
 /// Keep only the rows of an existing timeseries.csv up to and including step (for a resume

@@ -2,6 +2,7 @@
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JobRunner.h"
+#include "app/cli/SweepProgress.h"
 #include "app/cli/SweepReport.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/SweepFile.h"
@@ -26,6 +27,7 @@ struct SweepOptions {
     std::string file;
     std::string out;
     int jobs = 1;
+    double progressEveryS = 60;
     bool quiet = false;
 };
 
@@ -45,7 +47,7 @@ int runSweep(const SweepOptions& options) {
     fs::create_directories(out);
     const std::string self = selfExecutable();
     std::vector<Job> jobs;
-    std::vector<SweepEntry> entries;
+    std::vector<SweepEntry> entries, toRun;
     for (const auto& casePath : sweep.cases) {
         const auto spec = io::loadCase(casePath, sweep.overrides); // bad input fails before any run
         const fs::path dir = out / spec.name;
@@ -65,18 +67,27 @@ int runSweep(const SweepOptions& options) {
             if (!options.quiet) std::cout << "run     " << spec.name << "\n";
         }
         jobs.push_back(std::move(job));
+        toRun.push_back(entries.back());
     }
     std::cout.flush();
     shareCoresBetweenJobs(options.jobs);
     int failures = 0;
-    runJobs(jobs, options.jobs, [&](const JobResult& result, int done, int total) {
+    SweepProgress progress(toRun, options.jobs, static_cast<int>(entries.size() - toRun.size()));
+    const auto onFinished = [&](const JobResult& result, int done, int total) {
         failures += result.exit_code != 0;
+        progress.finished(result.index, result.wall_s);
         if (!options.quiet)
             std::cout << "[" << done << "/" << total << "] " << result.label
                       << (result.exit_code == 0 ? " finished" : " FAILED (see its log.txt)") << " in "
                       << static_cast<long long>(result.wall_s) << " s\n"
                       << std::flush;
-    });
+    };
+    JobTick onTick;
+    if (!options.quiet && options.progressEveryS > 0)
+        onTick = [&](const std::vector<RunningJob>& running) {
+            std::cout << "sweep: " << progress.line(running) << "\n" << std::flush;
+        };
+    runJobs(jobs, options.jobs, onFinished, onTick, options.progressEveryS);
     const auto report = writeSweepReport(sweep.name, entries, out);
     if (!options.quiet)
         for (const auto& path : report.files) std::cout << "wrote " << path << "\n";
@@ -93,6 +104,9 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
     command->add_option("file", options->file, "Sweep file (TOML: sweep = 1, cases = [...])")->required();
     command->add_option("--out", options->out, "Output folder, one sub-folder per case")->required();
     command->add_option("--jobs", options->jobs, "Cases run at the same time")->check(CLI::Range(1, 256));
+    command->add_option("--progress-every", options->progressEveryS,
+                        "Seconds between progress lines (each running case's t/tau_c, ETA); 0: none")
+        ->check(CLI::NonNegativeNumber);
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
     command->callback([options, &exitCode] { exitCode = runSweep(*options); });
 }
