@@ -3,11 +3,15 @@
 
 #include "app/cli/SweepFigures.h"
 #include "solver/io/CaseWriter.h"
+#include "solver/io/TimeSeriesWriter.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
+#include <stdexcept>
 
 namespace lbdem::cli {
 
@@ -15,7 +19,7 @@ namespace {
 
 struct Row {
     std::string name, packing, slope, medium, status;
-    double runout = 0, kePeak = 0, tKePeak = 0, packingFinal = 0, wall = 0, mlups = 0;
+    double runout = 0, endReachedTc = std::numeric_limits<double>::quiet_NaN(), kePeak = 0, tKePeak = 0, packingFinal = 0, wall = 0, mlups = 0;
     SweepFigureCase figure; ///< what the figures need of this case
 };
 
@@ -28,6 +32,20 @@ std::string number(double value, const char* pattern = "%.4g") {
 double numberOr(const nlohmann::json& json, const char* key) {
     const auto found = json.find(key);
     return found != json.end() && found->is_number() ? found->get<double>() : 0.0;
+}
+
+/// t/tau_c at which the front first came within the largest grain diameter of the domain's end
+/// (from then on the runout is bounded by the domain, not by the flow); NaN when it never did.
+double endReachedTc(const SweepEntry& entry) {
+    const double limit = entry.spec.domain.width_m - entry.spec.grains.size_ratio * entry.spec.grains.d_min_m;
+    try {
+        const auto series = io::readTimeSeries((entry.dir / "timeseries.csv").string());
+        const auto time = series.column("t_over_tc"), front = series.column("runout_m");
+        for (std::size_t k = 0; k < std::min(time.size(), front.size()); ++k)
+            if (front[k] >= limit) return time[k];
+    } catch (const std::runtime_error&) {
+    }
+    return std::numeric_limits<double>::quiet_NaN();
 }
 
 Row readRow(const SweepEntry& entry) {
@@ -53,6 +71,7 @@ Row readRow(const SweepEntry& entry) {
         row.wall = numberOr(summary, "wall_s");
         row.mlups = numberOr(summary, "mlups");
         row.figure.runout_final = row.runout;
+        row.endReachedTc = endReachedTc(entry);
     } catch (const nlohmann::json::exception&) {
         row.status = "unreadable";
     }
@@ -82,18 +101,22 @@ SweepReportResult writeSweepReport(const std::string& name, const std::vector<Sw
                                    const std::filesystem::path& out) {
     std::vector<Row> rows;
     for (const auto& entry : entries) rows.push_back(readRow(entry));
-    std::string csv = "case,packing,slope_deg,medium,status,runout_final,ke_peak,t_ke_peak_over_tc,"
-                      "packing_final,wall_s,mlups\n";
+    std::string csv = "case,packing,slope_deg,medium,status,runout_final,end_reached_tc,ke_peak,"
+                      "t_ke_peak_over_tc,packing_final,wall_s,mlups\n";
     std::string md = "# Sweep " + name + "\n\n| case | packing | slope (deg) | medium | status | "
-                     "(L_f - L_i)/L_i | peak E_k/E_p0 | t_peak/tau_c | final packing | wall (s) | MLUPS |\n"
-                     "|---|---|---|---|---|---|---|---|---|---|---|\n";
+                     "(L_f - L_i)/L_i | front at the domain's end (t/tau_c) | peak E_k/E_p0 | t_peak/tau_c | "
+                     "final packing | wall (s) | MLUPS |\n"
+                     "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& r : rows) {
+        const bool reached = std::isfinite(r.endReachedTc);
         csv += r.name + "," + r.packing + "," + r.slope + "," + r.medium + "," + r.status + "," +
-               number(r.runout, "%.6g") + "," + number(r.kePeak, "%.6g") + "," + number(r.tKePeak, "%.6g") +
+               number(r.runout, "%.6g") + "," + (reached ? number(r.endReachedTc, "%.6g") : "") + "," +
+               number(r.kePeak, "%.6g") + "," + number(r.tKePeak, "%.6g") +
                "," + number(r.packingFinal, "%.6g") + "," + number(r.wall, "%.1f") + "," +
                number(r.mlups, "%.1f") + "\n";
         md += "| " + r.name + " | " + r.packing + " | " + r.slope + " | " + r.medium + " | " + r.status +
-              " | " + number(r.runout, "%.3f") + " | " + number(r.kePeak, "%.4f") + " | " +
+              " | " + number(r.runout, "%.3f") + (reached ? " (end)" : "") + " | " +
+              (reached ? number(r.endReachedTc, "%.2f") : "never") + " | " + number(r.kePeak, "%.4f") + " | " +
               number(r.tKePeak, "%.2f") + " | " + number(r.packingFinal, "%.3f") + " | " +
               number(r.wall, "%.0f") + " | " + number(r.mlups, "%.0f") + " |\n";
     }
