@@ -58,6 +58,18 @@ void Coupling::mapGrains() {
     std::fill(m_loadT.begin(), m_loadT.end(), 0.0);
     if (m_params.method == CouplingMethod::BounceBack) mapBounceBack();
     else mapPsm();
+    m_lattice.setLastSweptRow(topGrainRow());
+}
+
+int Coupling::topGrainRow() const {
+    // Two rows above the highest grain: its links reach one node out, the next kernel step one more.
+    Real top = -1;
+    for (std::size_t p = 0; p < m_dem.particles().size(); ++p) {
+        Real cx, cy, r;
+        grainGeometry(p, cx, cy, r);
+        top = std::max(top, cy + r + 2);
+    }
+    return top < 0 ? m_lattice.ny() - 1 : std::min(m_lattice.ny() - 1, static_cast<int>(top));
 }
 
 void Coupling::collectForces() {

@@ -129,6 +129,8 @@ private:
     void grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) const;
     void surfaceVelocity(std::size_t p, Real rx, Real ry, Real& ux, Real& uy) const;
     Box grainBox(std::size_t p) const;
+    /// The row the bulk kernel should sweep last: just above the highest grain (cache reuse).
+    int topGrainRow() const;
     void resizeGrains();
     void mapBounceBack();
     void findChanges();

@@ -12,7 +12,7 @@
 #include "solver/coupling/Coupling.h"
 
 #include "solver/coupling/DiscGeometry.h"
-#include "solver/dem/OpenMp.h"
+#include "solver/core/OpenMp.h"
 #include "solver/lattice/D2Q9.h"
 
 #include <algorithm>
@@ -90,14 +90,14 @@ void Coupling::findGrainChanges(std::size_t p, std::vector<Change>& out) const {
 
 void Coupling::findChanges() {
     const std::size_t n = m_dem.particles().size();
-    const int threads = n >= kParallelGrains ? std::max(dem::ompMaxThreads(), 1) : 1;
+    const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
     if (m_threadChanges.size() < static_cast<std::size_t>(threads)) m_threadChanges.resize(threads);
     for (auto& list : m_threadChanges) list.clear();
     // Static schedule: thread t takes the t-th block of grains, so the lists, read in thread
     // order, hold the changes in grain order whatever the thread count.
 #pragma omp parallel num_threads(threads) if (threads > 1)
     {
-        std::vector<Change>& out = m_threadChanges[dem::ompThreadIndex()];
+        std::vector<Change>& out = m_threadChanges[ompThreadIndex()];
 #pragma omp for schedule(static)
         for (long long p = 0; p < static_cast<long long>(n); ++p) {
             findGrainChanges(static_cast<std::size_t>(p), out);

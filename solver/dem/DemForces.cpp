@@ -2,7 +2,7 @@
 // Coulomb-type limits, for disc pairs and disc-wall contacts, into per-thread force buffers.
 #include "solver/dem/DemSystem.h"
 
-#include "solver/dem/OpenMp.h"
+#include "solver/core/OpenMp.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // DemSystem: setup, velocity-Verlet stepping, neighbour rebuilds with history carry-over.
 #include "solver/dem/DemSystem.h"
 
-#include "solver/dem/OpenMp.h"
+#include "solver/core/OpenMp.h"
 
 #include <algorithm>
 #include <cmath>

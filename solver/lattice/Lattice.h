@@ -89,6 +89,10 @@ public:
 
     /// One fused stream-collide step: boundary links, bulk kernel, Zou-He nodes, solid reset.
     void step();
+    /// Have the bulk kernel sweep row y last (from row y + 1 on, wrapping round), so that the rows
+    /// up to y are the freshest in cache when the grain coupling comes next. Rows are independent:
+    /// any order gives the same populations. Default: the top row (rows swept bottom to top).
+    void setLastSweptRow(int y) { m_lastSweptRow = y; }
     long long stepCount() const { return m_step; }
     /// Set the step counter (checkpoint restore; the populations through importStoredValues()).
     void setStepCount(long long step) { m_step = step; }
@@ -184,6 +188,7 @@ private:
     int m_nx = 0, m_ny = 0, m_ghostLeft = 0, m_ghostBottom = 0;
     Real m_offsetX = 0.5, m_offsetY = 0.5;
     long long m_cells = 0, m_step = 0;
+    int m_lastSweptRow = -1; // -1: the top row
     HugeVector<double> m_f64;                 // double storage: populations, in place (AA pattern)
     HugeVector<float> m_f32;                  // float storage: f_i - w_i, in place; one of the two is empty
     std::vector<long long> m_recordedCells;   // cells whose incoming populations each step records

@@ -1,11 +1,27 @@
 // The time step: boundary passes, then the fused stream-collide kernel of the AA pattern.
 #include "solver/lattice/Lattice.h"
 
+#include "solver/core/OpenMp.h"
+
 #include <utility>
 
 namespace lbdem::solver::lattice {
 
 namespace {
+
+/// Run row(y) once for every row y < ny, each thread first its share of the rows above `last`,
+/// then its share of the rows 0..last: every thread ends in the rows up to `last`, which are then
+/// the freshest in the shared cache (Lattice::setLastSweptRow). Static shares, as schedule(static).
+template <class Row>
+void sweepRows(int ny, int last, bool parallel, const Row& row) {
+#pragma omp parallel if (parallel)
+    {
+        const int threads = ompThreadCount(), t = ompThreadIndex();
+        const int above = ny - 1 - last, band = last + 1;
+        for (int y = last + 1 + above * t / threads; y < last + 1 + above * (t + 1) / threads; ++y) row(y);
+        for (int y = band * t / threads; y < band * (t + 1) / threads; ++y) row(y);
+    }
+}
 
 /// Load the stored value v of a direction of weight kW[Q] as a population (PopulationStorage).
 template <int Q, class S>
@@ -18,11 +34,11 @@ LBDEM_KERNEL_INLINE S store(Real f) { return StoredPopulation<S>::store(f, kW[Q]
 /// arrived, f_i in slot i), collides, and stores f*_i in its own slot opp(i). S is the stored
 /// number (double, or float holding f_i - w_i): values are widened and unshifted on the way in,
 /// collided in double and shifted and rounded on the way out.
+/// Rows are swept in the order of sweepRows.
 /// Pre: the boundary passes have filled the slots that solid neighbours send into the fluid.
 template <class S, class C>
-void collideInPlace(S* __restrict f, int nx, int ny, long long cells, const C& collide) {
-#pragma omp parallel for schedule(static) if (cells >= kParallelMinCells)
-    for (int y = 0; y < ny; ++y) {
+void collideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow, const C& collide) {
+    sweepRows(ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
         const long long row = static_cast<long long>(y) * nx;
         S* __restrict p0 = f + row;
         S* __restrict p1 = f + cells + row;
@@ -50,18 +66,17 @@ void collideInPlace(S* __restrict f, int nx, int ny, long long cells, const C& c
         // Each node touches only its own values, so the loop carries no dependence.
 #pragma omp simd
         for (int x = 0; x < nx; ++x) node(x);
-    }
+    });
 }
 
 /// AA step from an odd step count: node x finds the population arriving along c_i in slot
 /// opp(i) of x - c_i (where the neighbour left it), collides, and writes f*_i to slot i of
 /// x + c_i. The nine values read and written are the same nine, owned by x alone, so the update
 /// is in place and free of races between nodes, rows and threads. Periodic wrap on all sides.
-/// Stored values convert as in collideInPlace.
+/// Stored values convert and rows are swept as in collideInPlace.
 template <class S, class C>
-void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, const C& collide) {
-#pragma omp parallel for schedule(static) if (cells >= kParallelMinCells)
-    for (int y = 0; y < ny; ++y) {
+void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow, const C& collide) {
+    sweepRows(ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
         const long long row = static_cast<long long>(y) * nx;
         const long long rowN = static_cast<long long>(y + 1 == ny ? 0 : y + 1) * nx;
         const long long rowS = static_cast<long long>(y == 0 ? ny - 1 : y - 1) * nx;
@@ -92,14 +107,14 @@ void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, cons
 #pragma omp simd
         for (int x = 1; x < nx - 1; ++x) node(x, x - 1, x + 1);
         if (nx > 1) node(nx - 1, nx - 2, 0);
-    }
+    });
 }
 
 /// One AA step of the bulk kernel on the stored values f, from an odd or an even step count.
 template <class S, class C>
-void aaStep(S* f, bool odd, int nx, int ny, long long cells, const C& collide) {
-    if (odd) streamCollideInPlace(f, nx, ny, cells, collide);
-    else collideInPlace(f, nx, ny, cells, collide);
+void aaStep(S* f, bool odd, int nx, int ny, long long cells, int lastRow, const C& collide) {
+    if (odd) streamCollideInPlace(f, nx, ny, cells, lastRow, collide);
+    else collideInPlace(f, nx, ny, cells, lastRow, collide);
 }
 
 /// f[slot] = f[source] + add for every copy link, on the stored values: source and slot hold
@@ -204,8 +219,10 @@ void Lattice::runStep(const C& collide) {
     if (!m_obstacleLinks.empty()) computeLoads();
     applyZouHe();
     recordIncoming();
-    if (m_setup.storage == PopulationStorage::Float) aaStep(m_f32.data(), m_step & 1, m_nx, m_ny, m_cells, collide);
-    else aaStep(m_f64.data(), m_step & 1, m_nx, m_ny, m_cells, collide);
+    const int lastRow = m_lastSweptRow >= 0 && m_lastSweptRow < m_ny ? m_lastSweptRow : m_ny - 1;
+    if (m_setup.storage == PopulationStorage::Float)
+        aaStep(m_f32.data(), m_step & 1, m_nx, m_ny, m_cells, lastRow, collide);
+    else aaStep(m_f64.data(), m_step & 1, m_nx, m_ny, m_cells, lastRow, collide);
     ++m_step;
     resetSolids();
 }

@@ -1,16 +1,25 @@
-// Thin wrappers so that DEM kernels build with and without OpenMP.
+// Thin wrappers so that the kernels build with and without OpenMP.
 #pragma once
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
-namespace lbdem::solver::dem {
+namespace lbdem::solver {
 
 /// Threads an OpenMP parallel region would use by default (1 without OpenMP).
 inline int ompMaxThreads() {
 #ifdef _OPENMP
     return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+/// Threads in the current parallel region (1 outside one, or without OpenMP).
+inline int ompThreadCount() {
+#ifdef _OPENMP
+    return omp_get_num_threads();
 #else
     return 1;
 #endif
@@ -25,4 +34,4 @@ inline int ompThreadIndex() {
 #endif
 }
 
-} // namespace lbdem::solver::dem
+} // namespace lbdem::solver
