@@ -48,10 +48,12 @@ void SweepProgress::finished(std::size_t index, double wall_s) {
     c.nowTc = c.endTc;
 }
 
+bool SweepProgress::timed(const Case& c) { return c.wall_s >= kPaceAfterS && c.nowTc > c.startTc; }
+
 double SweepProgress::paceOfKind(bool fluid) const {
     double advanced = 0, wall = 0;
     for (const auto& c : m_cases)
-        if (c.fluid == fluid && c.wall_s >= kPaceAfterS && c.nowTc > c.startTc) {
+        if (c.fluid == fluid && timed(c)) {
             advanced += c.nowTc - c.startTc;
             wall += c.wall_s;
         }
@@ -77,8 +79,7 @@ std::string SweepProgress::line(const std::vector<RunningJob>& running) {
         std::snprintf(part, sizeof part, "%s %s t/tc %.2f/%.3g", k == 0 ? "; running" : ",", c.name.c_str(), c.nowTc,
                       c.endTc);
         text += part;
-        const double ownPace = c.wall_s >= kPaceAfterS && c.nowTc > c.startTc ? (c.nowTc - c.startTc) / c.wall_s : 0;
-        const double pace = ownPace > 0 ? ownPace : paceOfKind(c.fluid);
+        const double pace = timed(c) ? (c.nowTc - c.startTc) / c.wall_s : paceOfKind(c.fluid);
         if (pace <= 0) {
             ++untimed;
             continue;

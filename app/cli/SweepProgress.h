@@ -39,7 +39,9 @@ private:
         double wall_s = 0;  ///< wall time so far, or in all once done
         double nowTc = 0;   ///< t/tau_c at the last look
     };
-    double paceOfKind(bool fluid) const; ///< t/tau_c per wall second over the cases seen; 0 if none
+    /// Whether the case has run long enough (past its start-up) for its pace to count.
+    static bool timed(const Case& c);
+    double paceOfKind(bool fluid) const; ///< t/tau_c per wall second over the timed cases; 0 if none
 
     std::vector<Case> m_cases;
     int m_maxParallel;
