@@ -97,7 +97,7 @@ struct Deposit {
 };
 
 Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const Layout& start, Real width,
-                Real friction, bool relax, int threads) {
+                Real friction, bool relax) {
     Material prep = req.material;
     prep.normal_stiffness /= kSoften;
     prep.tangential_stiffness /= kSoften;
@@ -106,7 +106,7 @@ Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const
     // Some rolling resistance stops discs from rolling for ever on the free surface.
     prep.rolling_resistance = kPrepRollingResistance;
     DemSystem system(prep);
-    system.setThreads(threads);
+    system.setThreads(1); // the column must not depend on the thread count (generatePacking)
     system.reserve(radii.size());
     const Real top = start.y.back() + 4 * req.d_min * req.size_ratio;
     system.addWall(Vec2(0, 0), Vec2(width, 0));
@@ -134,7 +134,7 @@ Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const
 
 /// Deposition friction whose soft deposit is closest to aim (bracketed by the two end deposits).
 Real searchFriction(const PackingRequest& req, Packing& packing, const Layout& lattice, Real aim, Deposit dLo,
-                    Deposit dHi, int threads) {
+                    Deposit dHi) {
     Real lo = 0, hi = kMaxPrepFriction, mu = 0;
     Real bestError = std::abs(dLo.fraction - aim);
     if (std::abs(dHi.fraction - aim) < bestError) {
@@ -146,7 +146,7 @@ Real searchFriction(const PackingRequest& req, Packing& packing, const Layout& l
     while (bestError > searchTol && packing.depositions < kMaxDepositions) {
         const Real t = std::clamp((dLo.fraction - aim) / (dLo.fraction - dHi.fraction), Real(0.15), Real(0.85));
         const Real m = lo + t * (hi - lo);
-        const Deposit d = deposit(req, packing.radius, lattice, packing.width, m, false, threads);
+        const Deposit d = deposit(req, packing.radius, lattice, packing.width, m, false);
         ++packing.depositions;
         if (std::abs(d.fraction - aim) < bestError) {
             bestError = std::abs(d.fraction - aim);
@@ -203,7 +203,6 @@ Packing generatePacking(const PackingRequest& req, const PackingOptions& options
         return packing;
     }
     const auto start = std::chrono::steady_clock::now();
-    const int threads = options.threads;
     std::mt19937_64 rng(req.seed);
     packing.radius = drawRadii(req, rng);
     Real area = 0;
@@ -213,21 +212,21 @@ Packing generatePacking(const PackingRequest& req, const PackingOptions& options
     const Layout lattice = looseLattice(packing.radius, packing.width, rng);
 
     if (req.fixed_friction) {
-        const Deposit once = deposit(req, packing.radius, lattice, packing.width, req.material.friction, true, threads);
+        const Deposit once = deposit(req, packing.radius, lattice, packing.width, req.material.friction, true);
         return finish(packing, once, req.material.friction, 1, start, options.use_cache, path, true);
     }
     // Regula falsi on the deposition friction (the settled fraction falls as friction rises),
     // on the soft deposits; the stiff relaxation shifts the fraction a little, so a second
     // round aims at the target corrected by that shift.
     Real lo = 0, hi = kMaxPrepFriction;
-    const Deposit dLo0 = deposit(req, packing.radius, lattice, packing.width, lo, false, threads);
-    const Deposit dHi0 = deposit(req, packing.radius, lattice, packing.width, hi, false, threads);
+    const Deposit dLo0 = deposit(req, packing.radius, lattice, packing.width, lo, false);
+    const Deposit dHi0 = deposit(req, packing.radius, lattice, packing.width, hi, false);
     packing.depositions = 2;
     Real aim = req.target, mu = lo;
     Deposit final;
     for (int round = 0; round < 2; ++round) {
-        mu = searchFriction(req, packing, lattice, aim, dLo0, dHi0, threads);
-        final = deposit(req, packing.radius, lattice, packing.width, mu, true, threads);
+        mu = searchFriction(req, packing, lattice, aim, dLo0, dHi0);
+        final = deposit(req, packing.radius, lattice, packing.width, mu, true);
         ++packing.depositions;
         if (std::abs(final.fraction - req.target) <= req.tolerance) break;
         aim += req.target - final.fraction;

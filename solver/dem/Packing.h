@@ -42,14 +42,16 @@ struct Packing {
 struct PackingOptions {
     bool use_cache = true;
     std::string cache_dir; ///< empty: defaultPackingCacheDir()
-    int threads = 0;       ///< OpenMP threads of the depositions (0 = the OpenMP default)
 };
 
 /// Generate (or read from the cache) the column of a request. The column width follows from the
 /// drawn diameters: L_i = sqrt(sum(pi R^2) / (a target)). Discs are deposited under gravity in a
 /// box of that width from a loose seeded lattice; the deposition friction is searched (lower
 /// friction packs denser) until the settled fraction is within tolerance, then the column is
-/// relaxed with the run's contact law. Throws SimulationError if the target is out of reach.
+/// relaxed with the run's contact law. The depositions run on one thread: the DEM's force sums
+/// depend on how its rows are split between threads, and the column (which a chaotic deposition
+/// amplifies from rounding to whole grains) must not depend on the run's thread count, nor the
+/// cached file on which run made it first. Throws SimulationError if the target is out of reach.
 Packing generatePacking(const PackingRequest& request, const PackingOptions& options = {});
 
 /// Packing fraction of a column resting on y = 0 in [0, width]: total disc area over width * H,

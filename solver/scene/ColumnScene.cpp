@@ -45,16 +45,8 @@ dem::PackingRequest packingRequest(const CaseSpec& spec) {
     return r;
 }
 
-namespace {
-/// The case's thread count applies to the packing generator too, unless the caller chose one.
-dem::PackingOptions withCaseThreads(dem::PackingOptions options, const CaseSpec& spec) {
-    if (options.threads == 0) options.threads = spec.run.threads;
-    return options;
-}
-} // namespace
-
 ColumnScene::ColumnScene(const CaseSpec& spec, const Plan& plan, const dem::PackingOptions& options)
-    : ColumnScene(spec, plan, dem::generatePacking(packingRequest(spec), withCaseThreads(options, spec))) {}
+    : ColumnScene(spec, plan, dem::generatePacking(packingRequest(spec), options)) {}
 
 ColumnScene::ColumnScene(const CaseSpec& spec, const Plan& plan, dem::Packing packing)
     : m_packing(std::move(packing)), m_system(grainMaterial(spec.grains)), m_dt(plan.dem_dt_s),

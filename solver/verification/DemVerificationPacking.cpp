@@ -19,13 +19,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-VerificationResult packingResult(double target, const char* label, int threads) {
+VerificationResult packingResult(double target, const char* label) {
     const auto start = std::chrono::steady_clock::now();
     CaseSpec spec;
     spec.grains.packing = target;
     dem::PackingOptions options;
     options.use_cache = false; // measure the generator itself, not a cached file
-    options.threads = threads;
     const dem::Packing p = dem::generatePacking(packingRequest(spec), options);
     char quantity[200];
     std::snprintf(quantity, sizeof quantity,
@@ -94,8 +93,8 @@ double collapseRunout(double aspect, int count, double& measuredAspect) {
 
 } // namespace
 
-std::vector<VerificationResult> packingResults(const VerificationOptions& options) {
-    return {packingResult(0.83, "dense", options.threads), packingResult(0.79, "loose", options.threads)};
+std::vector<VerificationResult> packingResults(const VerificationOptions&) {
+    return {packingResult(0.83, "dense"), packingResult(0.79, "loose")};
 }
 
 std::vector<VerificationResult> dryCollapseScalingResults(const VerificationOptions& options) {

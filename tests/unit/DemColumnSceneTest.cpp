@@ -37,7 +37,6 @@ void DemColumnSceneTest::columnCollapsesPastGate() {
     QTemporaryDir dir;
     lbdem::solver::dem::PackingOptions options;
     options.cache_dir = dir.path().toStdString();
-    options.threads = 1;
     const Plan plan = makePlan(spec);
     ColumnScene scene(spec, plan, options);
     QCOMPARE(scene.demTimeStep(), plan.dem_dt_s);
