@@ -45,6 +45,12 @@ file(READ "${OUT}/summary.json" summary)
 if(NOT summary MATCHES "\"finished\": true")
     message(FATAL_ERROR "the resumed run did not finish: ${summary}")
 endif()
+# Resuming a finished run (or to an earlier time) runs nothing and rewrites nothing.
+execute_process(COMMAND "${LBDEM}" resume "${OUT}" --until-tc 0.5 --quiet RESULT_VARIABLE code ERROR_VARIABLE err)
+file(READ "${OUT}/summary.json" summaryAgain)
+if(NOT code EQUAL 0 OR NOT summaryAgain STREQUAL summary)
+    message(FATAL_ERROR "resuming a finished run must leave summary.json as it was (${code}): ${err}")
+endif()
 file(STRINGS "${OUT}/timeseries.csv" rows)
 list(LENGTH rows count)
 if(NOT count EQUAL 6) # header + t/tc = 0, 0.25, 0.5, 0.75, 1
