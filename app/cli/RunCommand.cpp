@@ -88,14 +88,6 @@ void resumeCase(const RunOptions& options) {
     applyThreads(spec);
     solver::Simulation simulation(spec, plan);
     simulation.restoreState(data.state);
-    // A run already at (or past) the requested end is left as it is: its summary keeps its figures.
-    const double endTc = options.untilTc > 0 ? options.untilTc : spec.run.end_tc;
-    if (simulation.timeOverTc() >= endTc - 1e-9) {
-        if (!options.quiet)
-            std::cout << dir.string() << " is already at t/tc = " << simulation.timeOverTc() << " (asked for "
-                      << endTc << "): nothing to run, its outputs are left as they are\n";
-        return;
-    }
     if (!options.quiet)
         std::cout << "resuming " << spec.name << " at t/tc = " << simulation.timeOverTc() << " (step "
                   << simulation.stepIndex() << ")\n";

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <deque>
 #include <fstream>
+#include <iostream>
 
 namespace lbdem::cli {
 
@@ -175,6 +176,16 @@ void RunDriver::run() {
     const double outputInterval = spec.run.output_interval_tc * plan.tc_s;
     const double checkpointInterval = spec.output.checkpoint_interval_tc * plan.tc_s;
     const std::string seriesPath = (m_options.dir / "timeseries.csv").string();
+    const double endS = m_options.until_tc > 0 ? m_options.until_tc * plan.tc_s : plan.end_time_s;
+    const double halfStep = 0.5 * plan.dt_s;
+    // A resumed run already at (or past) the requested end is left as it is: no output, no
+    // checkpoint, and its summary keeps the figures of the run that got it there.
+    if (m_options.resumed && m_simulation.time() >= endS - halfStep) {
+        if (!m_options.quiet)
+            std::cout << m_options.dir.string() << " is already at t/tc = " << m_simulation.timeOverTc()
+                      << " (asked for " << endS / plan.tc_s << "): nothing to run, its outputs are left as they are\n";
+        return;
+    }
     if (m_options.resumed) {
         trimTimeSeries(seriesPath, m_simulation.stepIndex());
         p.baseStress = lastValues(seriesPath, "base_normal_stress_front_pa", kBaseStressWindow);
@@ -188,8 +199,6 @@ void RunDriver::run() {
                         : 0;
     p.nextOutputS = m_options.resumed ? p.outputIndex * outputInterval : now;
     p.nextCheckpointS = checkpointInterval > 0 ? now + checkpointInterval : 1e300;
-    const double endS = m_options.until_tc > 0 ? m_options.until_tc * plan.tc_s : plan.end_time_s;
-    const double halfStep = 0.5 * plan.dt_s;
 
     p.start = Clock::now();
     try {

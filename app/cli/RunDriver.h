@@ -36,7 +36,8 @@ public:
     /// Add a writer of the snapshot series (VTK, PNG); called at every output.
     void addSink(std::unique_ptr<SnapshotSink> sink);
 
-    /// Run to the end time; returns when finished. Throws SimulationError when unstable (the
+    /// Run to the end time (a resumed run already there is left untouched); returns when
+    /// finished. Throws SimulationError when unstable (the
     /// outputs and checkpoint written so far stay valid; summary.json then says finished = false
     /// and gives the diagnosis as stop_reason).
     void run();
