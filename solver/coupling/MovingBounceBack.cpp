@@ -240,7 +240,12 @@ int Coupling::linkSurfaceNode(int iu, int ju, Real sx, Real sy, Real r, const lo
     //   q >= 1/2: f_in(x_f) = f_out/(2q) + (2q - 1)/(2q) f_in^post(x_f) + 3 w rho c_in.u_w / q
     // u_w = u_p + omega x r at the wall point x_f + q c. The value is stored where the next step
     // reads the population arriving at x_f along c_in: the solid node's post-collision slot.
-    // Momentum exchange, Galilean invariant (Wen et al. 2014): dP = (c - u_w) f_out - (c_in - u_w) f_in.
+    // Momentum exchange, Galilean invariant (Wen et al. 2014): dP = (c - u_w) f_out - (c_in - u_w) f_in,
+    // on the excess populations f - w rho_0 (rho_0 = 1, the fluid at rest): the rest state's
+    // share 2 w rho_0 c integrates to zero over a closed wetted surface (each lattice line enters
+    // and leaves it), but where the surface faces another grain or a wall and has no link, it
+    // would leave a pull of the absolute pressure rho_0 c_s^2 on the open side. Subtracting it
+    // makes an unwetted part of a surface contribute nothing (the verify case near-contact).
     int links = 0;
     for (int back = 1; back < kQ; ++back) { // fluid node x_f = solid + c_back
         int fi = iu + kCx[back], fj = ju + kCy[back];
@@ -272,8 +277,9 @@ int Coupling::linkSurfaceNode(int iu, int ju, Real sx, Real sy, Real r, const lo
         else
             value = (out + (2 * q - 1) * m_lattice.population(slots[back], back) + moving) / (2 * q);
         m_lattice.setPopulation(solidSlots[back], back, value);
-        const Real dpx = kCx[toward] * (out + value) - ux * (out - value);
-        const Real dpy = kCy[toward] * (out + value) - uy * (out - value);
+        const Real excess = out + value - 2 * kW[toward];
+        const Real dpx = kCx[toward] * excess - ux * (out - value);
+        const Real dpy = kCy[toward] * excess - uy * (out - value);
         loadX += dpx;
         loadY += dpy;
         loadT += rx * dpy - ry * dpx;
