@@ -154,6 +154,9 @@ void declareRun(CaseSchema& s) {
               [](CaseSpec& c) -> double& { return c.run.output_interval_tc; });
     s.addInteger("run", "threads", "-", 0, 1024, "OpenMP threads; 0 uses every core.",
                  [](CaseSpec& c) -> int& { return c.run.threads; });
+    s.addReal("run", "gate_release_tc", "tau_c", 0, 1e4,
+              "Column collapse: the gate holds the column until this time (0: it opens at the start).",
+              [](CaseSpec& c) -> double& { return c.run.gate_release_tc; });
 }
 
 void declareOutput(CaseSchema& s) {

@@ -64,6 +64,7 @@ struct RunSpec {
     double end_tc = 16.0;          ///< end time in units of tau_c = sqrt(H_i / g)
     double output_interval_tc = 0.25; ///< time between outputs, in tau_c
     int threads = 0;               ///< OpenMP threads; 0 = all cores
+    double gate_release_tc = 0.0;  ///< the column's gate opens at this time, in tau_c (0: at once)
 };
 
 /// What each output writes.

@@ -135,6 +135,8 @@ public:
         m["main_mass_grains"] = static_cast<double>(d.main_mass_grains);
         m["max_grain_speed_m_s"] = m_column.system().maxSpeed();
         m["base_normal_stress_front_pa"] = baseStressAtFront(d.front_x_m);
+        m["floor_normal_force_n_m"] = floorNormalForce();
+        m["wall_support_normal_n_m"] = wallSupportNormal();
         if (m_lattice) {
             m["froude_densimetric"] = d.froude_densimetric;
             m["pore_pressure_failure_plane_pa"] = failurePlanePressure();
@@ -171,6 +173,30 @@ private:
     double initialPotential() const {
         return potentialEnergy(viewOf(m_column.system().particles()), m_spec.domain.gravity_m_s2,
                                m_params.slope_rad);
+    }
+
+    /// Total grain-floor normal force [N/m]: at rest, the column's weight normal to the slope
+    /// (buoyant weight when submerged) less what wall friction carries.
+    double floorNormalForce() const {
+        double force = 0;
+        for (const auto& c : m_column.system().contacts())
+            if (c.j < 0 && c.py < 1e-9) force += c.fn;
+        return force;
+    }
+
+    /// Force normal to the floor that all walls exert on the grains [N/m]: the floor's normal
+    /// force plus the friction of the back wall and the gate. At rest it balances the column's
+    /// weight normal to the slope (buoyant weight when submerged) with the fluid carrying none;
+    /// the floor alone does not, since frictional side walls carry part of it (Janssen).
+    double wallSupportNormal() const {
+        const auto& p = m_column.system().particles();
+        double force = 0;
+        for (const auto& c : m_column.system().contacts()) {
+            if (c.j >= 0) continue;
+            const double dx = c.px - p.x[c.i], dy = c.py - p.y[c.i], d = std::hypot(dx, dy);
+            if (d > 0) force -= (c.fn * dy + c.ft * dx) / d; // y-force on the disc (wall contact law)
+        }
+        return force;
     }
 
     /// Grain-floor normal force per unit length over the front region [Pa per unit thickness].

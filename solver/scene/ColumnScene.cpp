@@ -11,6 +11,13 @@ namespace lbdem::solver {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+/// Before release the column settles under the run's gravity until its fastest disc is slower
+/// than this [m/s] (the column-at-rest check asks for 1e-4 after 0.5 tau_c in still water) ...
+constexpr double kSettledSpeed = 1e-5;
+/// ... or for at most this long [s] (a column on a slope steeper than its friction never settles).
+constexpr double kMaxSettleTime = 0.5;
+/// DEM steps between two speed checks while settling.
+constexpr int kSettleCheckSteps = 500;
 } // namespace
 
 dem::Material grainMaterial(const GrainSpec& g) {
@@ -50,7 +57,7 @@ ColumnScene::ColumnScene(const CaseSpec& spec, const Plan& plan, const dem::Pack
 
 ColumnScene::ColumnScene(const CaseSpec& spec, const Plan& plan, dem::Packing packing)
     : m_packing(std::move(packing)), m_system(grainMaterial(spec.grains)), m_dt(plan.dem_dt_s),
-      m_submerged(spec.fluid.enabled) {
+      m_submerged(spec.fluid.enabled), m_gateReleaseS(spec.run.gate_release_tc * plan.tc_s) {
     build(spec);
 }
 
@@ -71,15 +78,45 @@ void ColumnScene::build(const CaseSpec& spec) {
     for (std::size_t k = 0; k < m_packing.x.size(); ++k)
         m_system.addDisc(m_packing.x[k], m_packing.y[k], m_packing.radius[k]);
     m_system.setGravity(grainGravity(spec));
-    if (spec.run.threads > 0) m_system.setThreads(spec.run.threads);
-    // The gate holds the column while it is built and vanishes at t = 0.
-    m_system.setWallActive(m_gate, false);
+    settleBeforeRelease();
+    m_system.setThreads(spec.run.threads); // 0: OpenMP's default
+    // The gate holds the column while it is built and vanishes at t = 0, or later when asked.
+    m_system.setWallActive(m_gate, m_gateReleaseS > 0);
     m_system.computeForces();
 }
 
-void ColumnScene::step() { m_system.step(m_dt); }
+void ColumnScene::settleBeforeRelease() {
+    // The generator deposits the column dry under vertical gravity; the run tilts gravity by the
+    // slope and, under water, reduces it by buoyancy. Settling against the closed gate under the
+    // run's own gravity first makes t = 0 an equilibrium (a submerged column at rest puts its
+    // buoyant weight on the floor) instead of a jolt that shakes the column as it is released.
+    // One thread: the column must not depend on the run's thread count.
+    m_system.setThreads(1);
+    m_system.computeForces();
+    while (m_system.time() < kMaxSettleTime) {
+        for (int k = 0; k < kSettleCheckSteps; ++k) m_system.step(m_dt);
+        if (m_system.maxSpeed() < kSettledSpeed) break;
+    }
+    m_settleTime = m_system.time();
+    m_system.setClock(0, 0);
+}
 
-void ColumnScene::advance(double dt, int substeps) { m_system.advance(dt, substeps); }
+void ColumnScene::releaseGateWhenDue() {
+    if (m_system.walls()[m_gate].active && m_system.time() >= m_gateReleaseS) {
+        m_system.setWallActive(m_gate, false);
+        m_system.computeForces();
+    }
+}
+
+void ColumnScene::step() {
+    releaseGateWhenDue();
+    m_system.step(m_dt);
+}
+
+void ColumnScene::advance(double dt, int substeps) {
+    releaseGateWhenDue();
+    m_system.advance(dt, substeps);
+}
 
 void ColumnScene::fillSnapshot(Snapshot& snapshot) const {
     snapshot.step = m_system.stepCount();

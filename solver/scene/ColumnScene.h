@@ -23,7 +23,7 @@ Vec2 grainGravity(const CaseSpec& spec);
 dem::PackingRequest packingRequest(const CaseSpec& spec);
 
 /// Column collapse on a slope: a packing of width L_i from the generator rests on the floor
-/// against the left wall, held by a gate at x = L_i that is removed at t = 0. Walls: floor
+/// against the left wall, held by a gate at x = L_i that is removed at t = 0 (or at run.gate_release_tc). Walls: floor
 /// y = 0 and left wall x = 0 over the domain, a right wall at the domain width. Dry cases
 /// allocate no fluid; submerged ones add buoyancy and take hydrodynamic loads through the
 /// particles' external force and torque arrays (held fixed across advance()).
@@ -54,7 +54,9 @@ public:
     double initialWidth() const { return m_packing.width; }
     double initialHeight() const { return m_packing.height; }
     bool submerged() const { return m_submerged; }
-    /// Index of the gate among the walls (inactive from t = 0).
+    /// How long the column settled under the run's gravity before t = 0 [s] (plan and logs).
+    double settleTime() const { return m_settleTime; }
+    /// Index of the gate among the walls (inactive from run.gate_release_tc on, at once by default).
     std::size_t gateWall() const { return m_gate; }
 
     /// Fill the grains, contacts and walls of a snapshot (and step, time, domain, slope).
@@ -62,12 +64,18 @@ public:
 
 private:
     void build(const CaseSpec& spec);
+    /// Let the column come to rest under the run's gravity against the gate, then start the clock.
+    void settleBeforeRelease();
+    /// Switch the gate off once the clock reaches the release time (forces follow the new walls).
+    void releaseGateWhenDue();
 
     dem::Packing m_packing;
     dem::DemSystem m_system;
     double m_dt = 0;
     bool m_submerged = false;
     std::size_t m_gate = 0;
+    double m_gateReleaseS = 0; ///< the gate opens at this time [s]
+    double m_settleTime = 0;   ///< how long the column settled before t = 0 [s]
 };
 
 /// Copy the discs, touching contacts and active walls of a DEM system into a snapshot
