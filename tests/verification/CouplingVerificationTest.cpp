@@ -16,7 +16,7 @@ private slots:
 
 void CouplingVerificationTest::casePasses_data() {
     QTest::addColumn<QString>("name");
-    for (const char* name : {"settling-disc", "gebart-square", "disc-shear", "permeability"})
+    for (const char* name : {"settling-disc", "gebart-square", "disc-shear", "permeability", "near-contact"})
         QTest::newRow(name) << QString(name);
 }
 
@@ -25,7 +25,7 @@ void CouplingVerificationTest::casePasses() {
     VerificationOptions options;
     options.long_run = qEnvironmentVariableIsSet("LBDEM_VERIFY_LONG");
     std::set<std::string> methods;
-    for (const auto& c : couplingVerificationCases()) {
+    for (const auto& c : verificationCases()) {
         if (c.name != name.toStdString()) continue;
         for (const auto& r : c.run(options)) {
             methods.insert(r.method);
