@@ -5,6 +5,22 @@ LBDEM_PACKAGES=(build-essential cmake ninja-build pkg-config libeigen3-dev libto
     libcli11-dev nlohmann-json3-dev libhdf5-dev qtbase5-dev libqt5opengl5-dev libvtk9-dev
     libvtk9-qt-dev xvfb xauth x11-utils)
 
+# Debian 12's paraview package cannot be installed beside libvtk9-dev: its python3-paraview
+# conflicts with python3-vtk9, which libvtk9-dev depends on. True when this machine has that
+# conflict: the Debian ParaView is installed, or apt would have to remove a package to install
+# the VTK build dependency. Only looks; never installs or removes anything.
+paraview_conflict() {
+    local package
+    for package in paraview python3-paraview; do
+        dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" && return 0
+    done
+    dpkg-query -W -f='${Status}' libvtk9-dev 2>/dev/null | grep -q "install ok installed" && return 1
+    command -v apt-get >/dev/null || return 1
+    local plan
+    plan=$(apt-get install --simulate -qq libvtk9-dev libvtk9-qt-dev 2>/dev/null || true)
+    grep -q '^Remv .*paraview' <<<"$plan"
+}
+
 # Install the packages that are missing (idempotent); say clearly when that is impossible.
 install_dependencies() {
     local missing=()
@@ -13,6 +29,14 @@ install_dependencies() {
             || missing+=("$package")
     done
     [[ ${#missing[@]} -eq 0 ]] && return 0
+    if paraview_conflict; then
+        echo "error: Debian's paraview package (python3-paraview) conflicts with python3-vtk9, which" \
+             "lbdem's build dependency libvtk9-dev needs, so the two cannot be installed together." \
+             "Remove the Debian ParaView yourself (sudo apt-get remove paraview python3-paraview)" \
+             "and use ParaView's own binary release from https://www.paraview.org/download/" \
+             "(unpack it and run bin/paraview) to open lbdem's results." >&2
+        exit 1
+    fi
     echo "Installing missing Debian packages: ${missing[*]}"
     local sudo=""
     if [[ $(id -u) -ne 0 ]]; then
