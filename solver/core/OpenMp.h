@@ -25,6 +25,15 @@ inline int ompThreadCount() {
 #endif
 }
 
+/// Use this many threads in the following parallel regions (n <= 0: leave the default).
+inline void ompSetThreads(int n) {
+#ifdef _OPENMP
+    if (n > 0) omp_set_num_threads(n);
+#else
+    (void)n;
+#endif
+}
+
 /// Index of the calling thread in the current parallel region (0 without OpenMP).
 inline int ompThreadIndex() {
 #ifdef _OPENMP

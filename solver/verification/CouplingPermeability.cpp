@@ -53,10 +53,6 @@ std::vector<Disc> randomPacking(Real dMin, Real side, std::uint64_t seed) {
     return discs;
 }
 
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 /// MRT with walls half-way independently of tau (Lambda = 3/16, Ginzburg & d'Humieres 2003).
 lattice::LatticeSetup permeabilityLattice(int side, Real tau, Real g) {
     lattice::LatticeSetup s;

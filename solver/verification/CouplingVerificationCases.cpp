@@ -6,10 +6,6 @@
 #include <cstdio>
 #include <string>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 namespace lbdem::solver {
 
 namespace {
@@ -17,20 +13,6 @@ namespace {
 using coupling::CouplingMethod;
 constexpr CouplingMethod kMethods[] = {CouplingMethod::BounceBack, CouplingMethod::Psm};
 constexpr double kPi = 3.14159265358979323846;
-
-void applyThreads(const VerificationOptions& options) {
-#ifdef _OPENMP
-    if (options.threads > 0) omp_set_num_threads(options.threads);
-#else
-    (void)options;
-#endif
-}
-
-std::string format(const char* pattern, double a, double b = 0, double c = 0) {
-    char buffer[256];
-    std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
-    return buffer;
-}
 
 VerificationResult relative(const std::string& name, const std::string& quantity, const CouplingRun& run,
                             double reference, double tolerance, const std::string& source,
@@ -43,21 +25,19 @@ VerificationResult relative(const std::string& name, const std::string& quantity
 }
 
 std::vector<VerificationResult> settling(const VerificationOptions& options) {
-    applyThreads(options);
     // Quick: 16 nodes per d, where the PSM disc is still effectively larger than its radius and
     // settles ~6 % slow (bounce-back is within 1 %), hence 10 %. Long: 32 nodes per d, 5 %.
     const int nodes = options.long_run ? 32 : 16;
     const double tolerance = options.long_run ? 0.05 : 0.10;
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods)
-        out.push_back(relative("settling-disc", format("terminal Re (%g nodes per d)", nodes),
+        out.push_back(relative("settling-disc", formatQuantity("terminal Re (%g nodes per d)", nodes),
                                settlingDisc(m, nodes), 259.5, tolerance,
                                "Wachs (2009), Particuology 7, 2D disc in a 4 d channel: Re = 259.5", m));
     return out;
 }
 
 std::vector<VerificationResult> gebart(const VerificationOptions& options) {
-    applyThreads(options);
     // K_perp / R^2 = C (sqrt(phi_max / phi) - 1)^(5/2), C = 16 / (9 pi sqrt 2), phi_max = pi / 4
     // for a square array (Gebart 1992): 0.0129 at phi = 0.5. The formula is a lubrication
     // approximation; the converged lattice value is ~0.0118, 8.5 % below it.
@@ -66,28 +46,26 @@ std::vector<VerificationResult> gebart(const VerificationOptions& options) {
     const int cell = options.long_run ? 80 : 40;
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods)
-        out.push_back(relative("gebart-square", format("K/R^2 at solid fraction 0.5 (%g-node cell)", cell),
+        out.push_back(relative("gebart-square", formatQuantity("K/R^2 at solid fraction 0.5 (%g-node cell)", cell),
                                gebartSquare(m, cell, 0.5), reference, 0.10,
                                "Gebart (1992), J. Compos. Mater. 26, square array, K/R^2 = 0.0129", m));
     return out;
 }
 
 std::vector<VerificationResult> shear(const VerificationOptions& options) {
-    applyThreads(options);
     // At Re_p = 0.1 fluid inertia alone slows a 2D disc by ~2 % (measured: 0.987 at 8 d, 0.982
     // at 16 d between the walls), so the case runs at Re_p = 0.01 in a 16 d channel.
     const int nodes = options.long_run ? 16 : 8;
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods)
         out.push_back(relative("disc-shear",
-                               format("omega / (-gamma/2), Re_p = 0.01, %g nodes per d, walls 16 d apart", nodes),
+                               formatQuantity("omega / (-gamma/2), Re_p = 0.01, %g nodes per d, walls 16 d apart", nodes),
                                discShear(m, nodes, 16), 1.0, 0.02,
                                "Stokes flow: a torque-free disc rotates at half the vorticity", m));
     return out;
 }
 
 std::vector<VerificationResult> permeability(const VerificationOptions& options) {
-    applyThreads(options);
     const std::vector<double> ratios = {0.7, 0.75, 0.8, 0.85, 0.9, 0.95};
     const int nodes = options.long_run ? 12 : 8, box = options.long_run ? 12 : 10;
     std::vector<std::string> names;
@@ -103,7 +81,7 @@ std::vector<VerificationResult> permeability(const VerificationOptions& options)
             wall += points[k].wall_s;
             finite = finite && std::isfinite(points[k].k_over_d2) && points[k].k_over_d2 > 0;
             if (k > 0) worst = std::max(worst, points[k].k_over_d2 / points[k - 1].k_over_d2);
-            ck += format(" %.2f:%.2f", points[k].ratio, points[k].k_over_d2 / points[k].ck_cylinders);
+            ck += formatQuantity(" %.2f:%.2f", points[k].ratio, points[k].k_over_d2 / points[k].ck_cylinders);
         }
         VerificationResult r;
         r.name = "permeability";

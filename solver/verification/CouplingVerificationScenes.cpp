@@ -19,10 +19,6 @@ using lattice::SideType;
 using Clock = std::chrono::steady_clock;
 constexpr double kPi = 3.14159265358979323846;
 
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 /// Lattice, grains and their coupling, stepped in the order a coupled simulation uses.
 struct Rig {
     Rig(const LatticeSetup& setup, const dem::Material& material, const CouplingParams& params)

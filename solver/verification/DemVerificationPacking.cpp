@@ -15,10 +15,6 @@ namespace lbdem::solver {
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 VerificationResult packingResult(double target, const char* label) {
     const auto start = std::chrono::steady_clock::now();
     CaseSpec spec;

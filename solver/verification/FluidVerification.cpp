@@ -10,27 +10,11 @@
 #include <cmath>
 #include <string>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 namespace lbdem::solver {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-void applyThreads(const VerificationOptions& options) {
-#ifdef _OPENMP
-    if (options.threads > 0) omp_set_num_threads(options.threads);
-#else
-    (void)options;
-#endif
-}
 
 // A quantity that must stay below a bound: error = value, reference 0.
 VerificationResult bounded(std::string name, std::string quantity, double value, double tolerance,
@@ -122,7 +106,6 @@ ResolutionSeries runSeries(const std::string& scene, const VerificationOptions& 
 }
 
 std::vector<VerificationResult> poiseuille(const VerificationOptions& options) {
-    applyThreads(options);
     const ResolutionSeries series = runSeries("poiseuille", options);
     auto r = bounded("poiseuille", "L2 relative velocity error (16 nodes across)",
                      series.at(16).metrics.at("l2_error"), 1e-3, kPoiseuilleSource);
@@ -134,7 +117,6 @@ std::vector<VerificationResult> poiseuille(const VerificationOptions& options) {
 }
 
 std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) {
-    applyThreads(options);
     const ResolutionSeries series = runSeries("taylor_green", options);
     const FlowRun& run = series.at(32);
     auto r = compareRelative("taylor-green", "decay rate [1/s] (32 nodes per wavelength)",
@@ -157,7 +139,6 @@ std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) 
 }
 
 std::vector<VerificationResult> cavity(const VerificationOptions& options) {
-    applyThreads(options);
     const FlowRun run = runFlow(fluidCase("cavity", 128, "mrt"));
     auto r = bounded("cavity-re100", "max |u/U - Ghia| on the vertical centreline (128^2)",
                      run.metrics.at("ghia_max_deviation"), 0.01,
@@ -168,7 +149,6 @@ std::vector<VerificationResult> cavity(const VerificationOptions& options) {
 }
 
 std::vector<VerificationResult> cylinder(const VerificationOptions& options) {
-    applyThreads(options);
     const int d = options.long_run ? 40 : 20;
     const FlowRun run = runFlow(fluidCase("cylinder", d, "mrt"));
     const char* source = "Schäfer & Turek (1996), 2D-1 (Re = 20): C_D in [5.57, 5.59], dp in [0.1172, 0.1176]";

@@ -1,6 +1,7 @@
 // Verification cases: named checks of the solver against analytic or published values.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
@@ -32,14 +33,22 @@ struct VerificationCase {
     std::string name;        ///< the name `lbdem verify NAME` takes
     std::string description; ///< one line for `lbdem verify --list`
     std::function<std::vector<VerificationResult>(const VerificationOptions&)> run;
+    bool slow = false; ///< minutes even in its quick form (or empty): the default test suite leaves it to `long`
 };
 
-/// Every verification case of this build, in a stable order.
+/// Every verification case of this build, in a stable order; each run first applies
+/// options.threads.
 const std::vector<VerificationCase>& verificationCases();
 
 /// Helper for case authors: fill error and passed from value, reference and tolerance
 /// (relative error |value - reference| / |reference|).
 VerificationResult compareRelative(std::string name, std::string quantity, double value,
                                    double reference, double tolerance, std::string source);
+
+/// Seconds of wall time since start (the wall_s of a result).
+double secondsSince(std::chrono::steady_clock::time_point start);
+
+/// printf-style formatting of up to three numbers into a quantity's description.
+std::string formatQuantity(const char* pattern, double a, double b = 0, double c = 0);
 
 } // namespace lbdem::solver

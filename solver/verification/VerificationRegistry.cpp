@@ -5,7 +5,10 @@
 #include "solver/verification/DemVerification.h"
 #include "solver/verification/FluidVerification.h"
 
+#include "solver/core/OpenMp.h"
+
 #include <cmath>
+#include <cstdio>
 
 namespace lbdem::solver {
 
@@ -23,8 +26,14 @@ const std::vector<VerificationCase>& verificationCases() {
         std::vector<VerificationCase> all;
         for (Provider provider : kProviders) {
             if (!provider) continue;
-            auto some = provider();
-            all.insert(all.end(), some.begin(), some.end());
+            for (VerificationCase c : provider()) {
+                auto run = std::move(c.run);
+                c.run = [run](const VerificationOptions& options) {
+                    ompSetThreads(options.threads);
+                    return run(options);
+                };
+                all.push_back(std::move(c));
+            }
         }
         return all;
     }();
@@ -43,6 +52,16 @@ VerificationResult compareRelative(std::string name, std::string quantity, doubl
     result.passed = std::isfinite(value) && result.error <= tolerance;
     result.source = std::move(source);
     return result;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string formatQuantity(const char* pattern, double a, double b, double c) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+    return buffer;
 }
 
 } // namespace lbdem::solver
