@@ -40,7 +40,7 @@ inline Real tangentialAndRolling(Real fn, Real vt, Real spin, Real dt, Real kt, 
 /// Read-only inputs of the kernel: state (with predicted velocities) and contact-law constants.
 struct KernelView {
     const Real *x, *y, *vx, *vy, *w, *r;
-    Real kn, kt, mu, muWall, muRoll, dt;
+    Real kn, kt, mu, muWall, muRoll, muRollWall, dt;
 };
 
 /// Forces of the pairs (i, j > i) of one row, each stored in its slot and load.
@@ -97,7 +97,7 @@ inline void wallContact(const KernelView& v, WallSlot& s, const Wall& wall) {
     const Real fn = v.kn * (ri - d) - s.gn * vn;
     Real roll = 0;
     const Real ft =
-        tangentialAndRolling(fn, vt, v.w[i], v.dt, v.kt, s.gt, v.muWall, ri, v.muRoll, s.ut, s.ur, roll);
+        tangentialAndRolling(fn, vt, v.w[i], v.dt, v.kt, s.gt, v.muWall, ri, v.muRollWall, s.ut, s.ur, roll);
     s.fn = fn;
     s.ft = ft;
     s.fx = -(fn * nx - ft * ny);
@@ -112,7 +112,7 @@ void DemSystem::contactKernel(Real dt, int threads) {
     // Velocities predicted at the end of the step, so that the dashpots see v(t + dt).
     const KernelView view{m_p.x.data(), m_p.y.data(), m_vx.data(), m_vy.data(), m_w.data(), m_p.radius.data(),
                           m_material.normal_stiffness, m_kt, m_material.friction, m_material.wall_friction,
-                          m_material.rolling_resistance, dt};
+                          m_material.rolling_resistance, m_material.wall_rolling_resistance, dt};
     const std::uint32_t* start = m_rows.start.data();
     PairSlot* slots = m_slots.data();
     PairLoad* loads = m_loads.data();
@@ -139,6 +139,7 @@ void DemSystem::finishForces(Real h, bool kick) {
     const Real *m = m_p.mass.data(), *in = m_p.inertia.data();
     const Real *ex = m_p.ext_fx.data(), *ey = m_p.ext_fy.data(), *et = m_p.ext_torque.data();
     const Real gx = m_gravity.x(), gy = m_gravity.y();
+    const Real turn = m_material.contact_torque ? 1 : 0; // 1 * t == t: the default is unchanged
     // Each disc sums its loads in one fixed order (body and external load, pairs where it is the
     // partner j by increasing i, pairs of its own row by increasing j, its walls by index), so the
     // result is the same bits whichever thread handles it.
@@ -149,18 +150,18 @@ void DemSystem::finishForces(Real h, bool kick) {
             const PairLoad& l = loads[inSlots[k]];
             sx += l.fx;
             sy += l.fy;
-            st += l.tj;
+            st += turn * l.tj;
         }
         for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
             const PairLoad& l = loads[k];
             sx -= l.fx;
             sy -= l.fy;
-            st += l.ti;
+            st += turn * l.ti;
         }
         for (std::uint32_t k = wallStart[i]; k < wallStart[i + 1]; ++k) {
             sx += wslots[k].fx;
             sy += wslots[k].fy;
-            st += wslots[k].torque;
+            st += turn * wslots[k].torque;
         }
         fx[i] = sx;
         fy[i] = sy;
