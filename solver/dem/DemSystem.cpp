@@ -33,11 +33,14 @@ void DemSystem::reserve(std::size_t n) {
     m_rows.start.reserve(n + 1);
     m_rows.cols.reserve(6 * n);
     m_slots.reserve(6 * n);
+    m_loads.reserve(6 * n);
     m_oldStart.reserve(n + 1);
     m_oldSlots.reserve(6 * n);
     m_wallSlots.reserve(n);
     m_wallStart.reserve(n + 1);
     m_oldWallSlots.reserve(n);
+    m_inStart.reserve(n + 2);
+    m_inSlots.reserve(6 * n);
     m_refX.reserve(n);
     m_refY.reserve(n);
     m_vx.reserve(n);
@@ -134,36 +137,6 @@ void DemSystem::computeForces() {
     finishForces(0, false);
 }
 
-void DemSystem::finishForces(Real h, bool kick) {
-    const std::size_t n = m_p.size();
-    const int buffers = static_cast<int>(m_buffer.size() / std::max<std::size_t>(3 * n, 1));
-    Real* b = m_buffer.data();
-    Real *fx = m_p.fx.data(), *fy = m_p.fy.data(), *tq = m_p.torque.data();
-    Real *vx = m_p.vx.data(), *vy = m_p.vy.data(), *w = m_p.omega.data();
-    const Real *m = m_p.mass.data(), *in = m_p.inertia.data();
-    const Real *ex = m_p.ext_fx.data(), *ey = m_p.ext_fy.data(), *et = m_p.ext_torque.data();
-    const Real gx = m_gravity.x(), gy = m_gravity.y();
-#pragma omp parallel for num_threads(threadCount()) schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-        Real sx = m[i] * gx + ex[i], sy = m[i] * gy + ey[i], st = et[i];
-        for (int t = 0; t < buffers; ++t) {
-            Real* bt = b + 3 * n * t;
-            sx += bt[i];
-            sy += bt[n + i];
-            st += bt[2 * n + i];
-            bt[i] = bt[n + i] = bt[2 * n + i] = 0;
-        }
-        fx[i] = sx;
-        fy[i] = sy;
-        tq[i] = st;
-        if (kick) {
-            vx[i] += h * sx / m[i];
-            vy[i] += h * sy / m[i];
-            w[i] += h * st / in[i];
-        }
-    }
-}
-
 void DemSystem::rebuildNeighbours() {
     const std::size_t n = m_p.size();
     Real rmax = 0, rmin = n ? m_p.radius[0] : 0;
@@ -183,11 +156,10 @@ void DemSystem::rebuildNeighbours() {
     m_grid.build(m_p.x.data(), m_p.y.data(), n, 2 * rmax + m_skin);
     m_grid.pairs(m_p.x.data(), m_p.y.data(), m_p.radius.data(), m_skin, m_rows);
     mergeHistory();
+    buildIncoming();
     buildWallSlots();
     m_refX = m_p.x;
     m_refY = m_p.y;
-    const std::size_t need = 3 * n * static_cast<std::size_t>(threadCount());
-    if (m_buffer.size() != need) m_buffer.assign(need, 0);
     m_kt = m_material.tangential_stiffness;
     m_rebuild = false;
     ++m_rebuildCount;
@@ -196,6 +168,7 @@ void DemSystem::rebuildNeighbours() {
 void DemSystem::mergeHistory() {
     const std::size_t n = m_p.size();
     m_slots.resize(m_rows.cols.size());
+    m_loads.resize(m_rows.cols.size());
     const Real zeta = dampingRatio(m_material.restitution);
     const Real kn = m_material.normal_stiffness;
     const Real ratio = std::sqrt(m_material.tangential_stiffness / kn);

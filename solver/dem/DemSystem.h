@@ -31,11 +31,18 @@ struct PairSlot {
     Real ft = 0;    ///< tangential force on j along t = (-n_y, n_x) [N/m]
 };
 
+/// What one pair's contact of the last evaluation does to its two discs (zero when not touching).
+struct PairLoad {
+    Real fx = 0, fy = 0; ///< force on j; i feels the opposite [N/m]
+    Real ti = 0, tj = 0; ///< torques on i and on j [N]
+};
+
 /// A candidate disc-wall contact with its history and last contact point.
 struct WallSlot {
     std::int32_t i = 0, wall = 0;
     Real ut = 0, ur = 0, gn = 0, gt = 0;
     Real fn = 0, ft = 0;
+    Real fx = 0, fy = 0, torque = 0; ///< force and torque on the disc of the last evaluation
     Real px = 0, py = 0; ///< closest point on the wall [m]
 };
 
@@ -59,6 +66,8 @@ struct ContactHistory {
 /// the overlap returns to zero (F_n is not clipped, so it may be briefly tensile at separation).
 /// Tangential: spring k_t on the accumulated slip plus dashpot, capped at mu max(F_n, 0).
 /// Rolling: spring k_r = k_t R_eff^2 on the relative rotation, torque capped at mu_r R_eff F_n.
+/// Each contact's force is evaluated once into its own slot (in parallel); each disc then sums
+/// its slots in a fixed order, so a run gives the same bits on any number of threads.
 class DemSystem {
 public:
     /// An empty system with the given contact law; skin is the neighbour-list margin [m].
@@ -80,10 +89,8 @@ public:
     void setMaterial(const Material& material);
     const Material& material() const { return m_material; }
     /// OpenMP threads for the kernels (0 = the OpenMP default).
-    void setThreads(int threads) {
-        m_threads = threads;
-        m_rebuild = true; // the per-thread force buffers are sized on the rebuild
-    }
+    /// Results do not depend on it: every force sum is taken in a fixed order.
+    void setThreads(int threads) { m_threads = threads; }
 
     /// Advance one velocity-Verlet step of length dt; forces on entry must be those of the
     /// current state (they are after any step; call computeForces() after editing the state).
@@ -128,6 +135,7 @@ private:
     void mergeHistory();
     void buildWallSlots();
     void contactKernel(Real dt, int threads);
+    void buildIncoming();
     void finishForces(Real halfDt, bool kick);
     int threadCount() const;
     void resizePredicted();
@@ -142,13 +150,15 @@ private:
     NeighbourGrid m_grid;
     PairRows m_rows;                       ///< current candidate pairs
     std::vector<PairSlot> m_slots;         ///< one per candidate pair, parallel to m_rows.cols
+    std::vector<PairLoad> m_loads;         ///< parallel to m_slots, compact for the gather
     std::vector<std::uint32_t> m_oldStart; ///< previous rows, for carrying history over
     std::vector<PairSlot> m_oldSlots;
     std::vector<WallSlot> m_wallSlots, m_oldWallSlots; ///< sorted by (disc, wall)
     std::vector<std::uint32_t> m_wallStart; ///< wall slots of disc i: [m_wallStart[i], [i + 1])
     std::vector<Real> m_refX, m_refY;      ///< positions at the last rebuild
     std::vector<Real> m_vx, m_vy, m_w;     ///< velocities predicted at the end of the step
-    std::vector<Real> m_buffer;            ///< per-thread force buffers, 3 N each
+    std::vector<std::uint32_t> m_inStart;  ///< slots with partner j: m_inSlots[m_inStart[j] .. [j + 1])
+    std::vector<std::uint32_t> m_inSlots;  ///< slot indices grouped by partner j, in increasing i
     bool m_rebuild = true;
     bool m_haveOld = false;
     bool m_restorePending = false;         ///< m_old* hold restored history to merge

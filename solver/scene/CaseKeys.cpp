@@ -114,6 +114,20 @@ void declareGrains(CaseSchema& s) {
               [](CaseSpec& c) -> double& { return c.grains.wall_friction; });
     s.addReal("grains", "rolling_resistance", "-", 0, 1, "Rolling resistance coefficient.",
               [](CaseSpec& c) -> double& { return c.grains.rolling_resistance; });
+    s.addReal("grains", "wall_rolling_resistance", "-", 0, 1,
+              "Rolling resistance of disc-wall contacts, the paper's frictional floor: rolling "
+              "torque limited to mu_r R F_n. A disc alone on a slope theta comes to rest when it "
+              "exceeds tan(theta); 0.2 is above tan(7.5 deg) = 0.13.",
+              [](CaseSpec& c) -> double& { return c.grains.wall_rolling_resistance; });
+    s.addBool("grains", "buoyancy",
+              "Submerged grains feel the buoyancy-reduced gravity (1 - rho_f / rho_s) g, the "
+              "paper's model (the fluid carries no body force, so its pressure is the excess "
+              "pore pressure); false: the full g, as the reference's published code does.",
+              [](CaseSpec& c) -> bool& { return c.grains.buoyancy; });
+    s.addBool("grains", "contact_torque",
+              "Contacts turn the discs (tangential force times radius, rolling resistance); "
+              "false: they push the centres only, as in the reference's published code.",
+              [](CaseSpec& c) -> bool& { return c.grains.contact_torque; });
     s.addReal("grains", "normal_stiffness_n_m", "N/m", 1, 1e12,
               "Normal contact stiffness k_n per unit thickness.",
               [](CaseSpec& c) -> double& { return c.grains.normal_stiffness_n_m; });

@@ -44,6 +44,9 @@ struct GrainSpec {
     double friction_deg = 26.0;       ///< grain-grain friction angle
     double wall_friction = 0.466;     ///< grain-wall friction coefficient
     double rolling_resistance = 0.01; ///< rolling resistance coefficient
+    double wall_rolling_resistance = 0.2; ///< rolling resistance of disc-wall contacts (the floor)
+    bool buoyancy = true;             ///< submerged grains feel (1 - rho_f / rho_s) g; false: full g
+    bool contact_torque = true;       ///< contacts turn the discs; false: they push centres only
     double normal_stiffness_n_m = 1.6e6;     ///< k_n, per unit thickness
     double tangential_stiffness_n_m = 1.0e6; ///< k_t, per unit thickness
     double restitution = 0.5;         ///< normal coefficient of restitution

@@ -18,9 +18,11 @@ namespace lbdem::solver {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-/// Two discs belong to one mass while their gap is below this fraction of d_min (DESIGN §6).
+/// Two discs touch while their gap is below this fraction of d_min. The main mass links discs
+/// across gaps up to one largest diameter d_max (see mainMass): a lone disc parting from or
+/// rejoining a chain then moves the front by at most its own diameter plus a contact gap.
 constexpr double kContactGapOfDmin = 0.05;
-/// The front region (Froude number, base stress) spans this many mean diameters behind the front.
+/// The front window (flowing front layer, base stress) spans this many mean diameters behind the front.
 constexpr double kFrontLengthInDiameters = 15.0;
 /// Failure-plane probe: from the gate's foot at this angle to the slope [deg] (Rankine active
 /// wedge 45 + phi/2 for phi = 26 deg), sampled at this many points.
@@ -69,6 +71,8 @@ public:
         : m_spec(spec), m_plan(plan), m_column(spec, plan) {
         const double dMean = spec.grains.d_min_m * (1 + spec.grains.size_ratio) / 2;
         m_params.contact_gap_m = kContactGapOfDmin * spec.grains.d_min_m;
+        // The hole a lone disc leaves in a touching chain: its diameter plus two contact gaps.
+        m_params.bridge_gap_m = spec.grains.d_min_m * spec.grains.size_ratio + 2 * m_params.contact_gap_m;
         m_params.column_width_m = m_column.initialWidth();
         m_params.slope_rad = spec.domain.slope_deg * kPi / 180;
         m_params.gravity_m_s2 = spec.domain.gravity_m_s2;
@@ -76,7 +80,8 @@ public:
         m_params.fluid_density = plan.has_fluid ? spec.fluid.density_kg_m3 : 0;
         m_params.bin_width_m = dMean;
         m_params.front_length_m = kFrontLengthInDiameters * dMean;
-        // E_p0 with the full gravity in dry and submerged runs alike, so that E_k / E_p0 compares.
+        // E_p0 = sum m g h with the full gravity and h normal to the slope base, dry and
+        // submerged alike, so that E_k / E_p0 compares (Kumar's thesis).
         m_params.initial_potential_j_m = initialPotential();
         if (plan.has_fluid) {
             m_lattice.emplace(columnLatticeSetup(spec, plan));
@@ -171,8 +176,7 @@ public:
 
 private:
     double initialPotential() const {
-        return potentialEnergy(viewOf(m_column.system().particles()), m_spec.domain.gravity_m_s2,
-                               m_params.slope_rad);
+        return potentialEnergy(viewOf(m_column.system().particles()), m_spec.domain.gravity_m_s2);
     }
 
     /// Total grain-floor normal force [N/m]: at rest, the column's weight normal to the slope

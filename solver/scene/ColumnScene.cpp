@@ -28,13 +28,16 @@ dem::Material grainMaterial(const GrainSpec& g) {
     m.friction = std::tan(g.friction_deg * kPi / 180);
     m.wall_friction = g.wall_friction;
     m.rolling_resistance = g.rolling_resistance;
+    m.wall_rolling_resistance = g.wall_rolling_resistance;
+    m.contact_torque = g.contact_torque;
     m.density = g.density_kg_m3;
     return m;
 }
 
 Vec2 grainGravity(const CaseSpec& spec) {
     const double theta = spec.domain.slope_deg * kPi / 180, g = spec.domain.gravity_m_s2;
-    const double buoyancy = spec.fluid.enabled ? 1 - spec.fluid.density_kg_m3 / spec.grains.density_kg_m3 : 1;
+    const bool buoyant = spec.fluid.enabled && spec.grains.buoyancy;
+    const double buoyancy = buoyant ? 1 - spec.fluid.density_kg_m3 / spec.grains.density_kg_m3 : 1;
     return Vec2(g * std::sin(theta), -g * std::cos(theta)) * buoyancy;
 }
 

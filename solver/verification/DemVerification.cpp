@@ -23,6 +23,7 @@ CaseSpec demCase(double restitution) {
     spec.fluid.enabled = false;
     spec.grains.restitution = restitution;
     spec.grains.rolling_resistance = 0;
+    spec.grains.wall_rolling_resistance = 0; // the incline checks free rolling on the wall
     return spec;
 }
 
