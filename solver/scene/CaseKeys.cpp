@@ -34,7 +34,7 @@ void declareDomain(CaseSchema& s) {
                 [](CaseSpec& c) -> std::string& { return c.domain.right; });
     s.addInteger("domain", "absorbing_layer_nodes", "-", 0, 100000,
                  "Thickness in lattice nodes of the sponge layer inside each pressure side, which "
-                 "absorbs sound instead of reflecting it (0: none).",
+                 "absorbs sound instead of reflecting it (column scenes; 0: none).",
                  [](CaseSpec& c) -> int& { return c.domain.absorbing_layer_nodes; });
     s.addReal("domain", "absorbing_layer_strength", "-", 0, 1,
               "Relaxation per fluid step toward rest at the sponge layer's outer edge; it rises "
