@@ -27,6 +27,9 @@ nlohmann::json planToJson(const solver::Plan& plan) {
         {"estimated_run_s", plan.estimated_run_s},
         {"column_width_m", plan.column.width_m},
         {"column_height_m", plan.column.height_m},
+        {"absorbing_layer_nodes", plan.absorbing_layer_nodes},
+        {"runout_room", plan.runout_room},
+        {"notes", plan.notes},
         {"warnings", plan.warnings},
     };
 }
@@ -51,6 +54,7 @@ std::string formatPlan(const solver::Plan& plan) {
         line("expected velocity", "%.4g", plan.u_expected_m_s, "m/s");
         line("expected Mach", "%.4g", plan.mach, "");
         line("DEM sub-steps", "%.0f", plan.substeps, "per fluid step");
+        line("absorbing layer", "%.0f", plan.absorbing_layer_nodes, "nodes");
     }
     text += "Grains\n";
     line("grains", "%.0f", static_cast<double>(plan.grains), "discs");
@@ -63,6 +67,7 @@ std::string formatPlan(const solver::Plan& plan) {
     line("steps", "%.0f", static_cast<double>(plan.steps), "");
     line("memory", "%.1f", plan.memory_bytes / 1048576.0, "MiB");
     line("estimated run time", "%.0f", plan.estimated_run_s, "s");
+    for (const auto& note : plan.notes) text += "note: " + note + "\n";
     for (const auto& warning : plan.warnings) text += "warning: " + warning + "\n";
     return text;
 }

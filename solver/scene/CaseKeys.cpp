@@ -32,6 +32,14 @@ void declareDomain(CaseSchema& s) {
     s.addChoice("domain", "right", {"wall", "free_slip", "pressure", "periodic"},
                 "Right boundary of the fluid.",
                 [](CaseSpec& c) -> std::string& { return c.domain.right; });
+    s.addInteger("domain", "absorbing_layer_nodes", "-", 0, 100000,
+                 "Thickness in lattice nodes of the sponge layer inside each pressure side, which "
+                 "absorbs sound instead of reflecting it (column scenes; 0: none).",
+                 [](CaseSpec& c) -> int& { return c.domain.absorbing_layer_nodes; });
+    s.addReal("domain", "absorbing_layer_strength", "-", 0, 1,
+              "Relaxation per fluid step toward rest at the sponge layer's outer edge; it rises "
+              "from 0 at the inner edge as the square of the depth.",
+              [](CaseSpec& c) -> double& { return c.domain.absorbing_layer_strength; });
 }
 
 void declareFluid(CaseSchema& s) {

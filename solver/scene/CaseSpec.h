@@ -2,6 +2,7 @@
 #pragma once
 
 #include "solver/core/Real.h"
+#include "solver/lattice/AbsorbingLayer.h"
 
 #include <string>
 
@@ -15,6 +16,10 @@ struct DomainSpec {
     double gravity_m_s2 = 9.81;   ///< magnitude of gravity
     std::string top = "pressure"; ///< top boundary: wall, free_slip, pressure, periodic
     std::string right = "pressure"; ///< right boundary: wall, free_slip, pressure, periodic
+    /// Thickness in lattice nodes of the absorbing layer inside every pressure side (0: none).
+    int absorbing_layer_nodes = lattice::AbsorbingLayerSetup{}.nodes;
+    /// Relaxation per step toward rest at the layer's outer edge, sigma_max in (0, 1].
+    double absorbing_layer_strength = lattice::AbsorbingLayerSetup{}.strength;
 };
 
 /// The ambient fluid and its lattice-Boltzmann discretisation.

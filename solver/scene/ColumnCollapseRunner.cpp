@@ -3,6 +3,7 @@
 
 #include "solver/coupling/Coupling.h"
 #include "solver/diagnostics/MassDiagnostics.h"
+#include "solver/lattice/AbsorbingLayer.h"
 #include "solver/lattice/StabilityGuard.h"
 #include "solver/scene/ColumnScene.h"
 #include "solver/scene/ColumnState.h"
@@ -28,6 +29,8 @@ constexpr double kFrontLengthInDiameters = 15.0;
 /// wedge 45 + phi/2 for phi = 26 deg), sampled at this many points.
 constexpr double kFailurePlaneDeg = 58.0;
 constexpr int kProbePoints = 64;
+/// The far field of the acoustic-noise measure starts this many column widths from the column.
+constexpr double kFarFieldWidths = 2.0;
 
 lattice::SideType sideOf(const std::string& word) {
     if (word == "wall") return lattice::SideType::Wall;
@@ -47,6 +50,14 @@ lattice::LatticeSetup columnLatticeSetup(const CaseSpec& spec, const Plan& plan)
     setup.right.type = sideOf(spec.domain.right);
     if (setup.right.type == lattice::SideType::Periodic) setup.left.type = lattice::SideType::Periodic;
     return setup;
+}
+
+lattice::AbsorbingLayerSetup absorbingLayerSetup(const CaseSpec& spec) {
+    lattice::AbsorbingLayerSetup layer;
+    layer.nodes = spec.domain.absorbing_layer_nodes;
+    layer.strength = spec.domain.absorbing_layer_strength;
+    layer.rho = lattice::SideCondition{}.rho; // the pressure sides' density
+    return layer;
 }
 
 coupling::CouplingParams couplingParams(const CaseSpec& spec, const Plan& plan) {
@@ -86,6 +97,7 @@ public:
         if (plan.has_fluid) {
             m_lattice.emplace(columnLatticeSetup(spec, plan));
             m_coupling.emplace(*m_lattice, m_column.system(), couplingParams(spec, plan));
+            m_layer.emplace(*m_lattice, absorbingLayerSetup(spec));
             m_guard.emplace(plan.h_m);
         }
     }
@@ -103,6 +115,9 @@ public:
         t = timer.lap(Stage::StreamCollide, t);
         m_coupling->collectForces();
         t = timer.lap(Stage::HydrodynamicForces, t);
+        // After the loads: they read this step's post-collision populations as the kernel left them.
+        m_layer->apply(*m_lattice);
+        t = timer.lap(Stage::StreamCollide, t);
         // After collectForces: covered nodes hold leftovers of the bulk kernel until then.
         if (m_guard->due(m_lattice->stepCount())) m_guard->check(*m_lattice);
         t = timer.lap(Stage::Diagnostics, t);
@@ -145,6 +160,7 @@ public:
         if (m_lattice) {
             m["froude_densimetric"] = d.froude_densimetric;
             m["pore_pressure_failure_plane_pa"] = failurePlanePressure();
+            m["far_field_speed_ratio"] = farFieldSpeedRatio();
         }
     }
 
@@ -248,6 +264,37 @@ private:
         return samples ? sum / samples : 0.0;
     }
 
+    /// Acoustic noise measure: rms fluid speed over the fluid nodes farther than kFarFieldWidths
+    /// initial column widths from the initial column (outside the absorbing layer, which damps
+    /// by design) over the mean speed of the main mass's grains; 0 while the mass is at rest.
+    double farFieldSpeedRatio() const {
+        std::vector<char> inLayer(static_cast<std::size_t>(m_lattice->cells()), 0);
+        for (std::size_t k = 0; k < m_layer->nodeCount(); ++k) inLayer[m_layer->cellAt(k)] = 1;
+        const double width = m_column.initialWidth(), height = m_column.initialHeight();
+        const double reach = kFarFieldWidths * width, velocityScale = m_plan.h_m / m_plan.dt_s;
+        double sum = 0;
+        long long nodes = 0;
+        for (int j = 0; j < m_plan.ny; ++j)
+            for (int i = 0; i < m_plan.nx; ++i) {
+                const double x = (i + 0.5) * m_plan.h_m, y = (j + 0.5) * m_plan.h_m;
+                const double dx = std::max(x - width, 0.0), dy = std::max(y - height, 0.0);
+                const long long cell = m_lattice->index(m_lattice->firstFluidX() + i, m_lattice->firstFluidY() + j);
+                if (dx * dx + dy * dy <= reach * reach || inLayer[cell] || !m_lattice->isFluid(cell)) continue;
+                double ux, uy;
+                m_lattice->velocity(cell, ux, uy);
+                sum += (ux * ux + uy * uy) * velocityScale * velocityScale;
+                ++nodes;
+            }
+        const auto& p = m_column.system().particles();
+        const std::vector<bool> main = largestConnectedGroup(viewOf(p), m_params.contact_gap_m);
+        double speed = 0;
+        std::size_t grains = 0;
+        for (std::size_t k = 0; k < p.size(); ++k)
+            if (main[k]) speed += std::hypot(p.vx[k], p.vy[k]), ++grains;
+        speed = grains ? speed / grains : 0;
+        return nodes && speed > 0 ? std::sqrt(sum / nodes) / speed : 0.0;
+    }
+
     CaseSpec m_spec;
     Plan m_plan;
     ColumnScene m_column;
@@ -255,6 +302,7 @@ private:
     std::optional<lattice::Lattice> m_lattice;
     std::optional<coupling::Coupling> m_coupling;
     std::optional<lattice::StabilityGuard> m_guard;
+    std::optional<lattice::AbsorbingLayer> m_layer; // sponge inside the pressure sides (may hold no node)
 };
 
 } // namespace

@@ -16,6 +16,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSoundSpeed = 0.57735026918962576; // c_s = 1/sqrt(3) in lattice units
 constexpr int kQ = 9;
+// The longest submerged runout the paper's first author reports (thesis, Delta L ~ 3.1 for the
+// loose cases): a submerged domain should leave a front at least this much room.
+constexpr double kLongestExpectedRunout = 3.1;
 // Assumed throughputs for the run-time estimate; `lbdem bench` measures the real ones.
 constexpr double kAssumedLatticeUpdatesPerS = 100e6;
 constexpr double kAssumedParticleStepsPerS = 10e6;
@@ -80,6 +83,32 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
                                        nodesAcross));
 }
 
+/// The absorbing layer's thickness, and how far a front can run before it meets the end of the
+/// domain or the layer: said in a note, with a warning when a submerged front may run further.
+void planDomain(const CaseSpec& spec, Plan& plan) {
+    const auto& d = spec.domain;
+    if (plan.has_fluid && (d.right == "pressure" || d.top == "pressure") && d.absorbing_layer_strength > 0)
+        plan.absorbing_layer_nodes = d.absorbing_layer_nodes;
+    if (!plan.has_grains || plan.column.width_m <= 0) return;
+    const double layer = d.right == "pressure" ? plan.absorbing_layer_nodes * plan.h_m : 0.0;
+    const double end = d.width_m - layer, widths = d.width_m / plan.column.width_m;
+    plan.runout_room = (end - plan.column.width_m) / plan.column.width_m;
+    const char* meets = layer > 0 ? "the absorbing layer" : "the end of the domain";
+    char text[400];
+    const int used = std::snprintf(text, sizeof text,
+                             "the domain is %.3g m long (domain.width_m) = %.3g column widths: a front meets %s "
+                             "at Delta L = %.2f",
+                             d.width_m, widths, meets, plan.runout_room);
+    if (plan.has_fluid && used > 0 && used < static_cast<int>(sizeof text)) {
+        const bool room = plan.runout_room >= kLongestExpectedRunout;
+        std::snprintf(text + used, sizeof text - used,
+                      ", %s the longest submerged runout the paper's first author reports (Delta L ~ %.1f)%s",
+                      room ? "beyond" : "short of", kLongestExpectedRunout,
+                      room ? "" : "; a front that runs further is a lower bound (0.4 m leaves room)");
+    }
+    plan.notes.push_back(text);
+}
+
 } // namespace
 
 double contactDuration(double stiffness, double effectiveMass, double restitution) {
@@ -117,6 +146,7 @@ Plan makePlan(const CaseSpec& spec) {
         plan.substeps = 1;
     }
     if (!flow) {
+        planDomain(spec, plan);
         plan.end_time_s = spec.run.end_tc * plan.tc_s;
         plan.steps = static_cast<long long>(std::ceil(plan.end_time_s / plan.dt_s));
     }

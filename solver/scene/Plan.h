@@ -40,6 +40,11 @@ struct Plan {
     std::size_t memory_bytes = 0; ///< estimated solver memory
     double estimated_run_s = 0;   ///< rough wall time on this class of machine
     ColumnGeometry column;        ///< the initial column (zero when there are no grains)
+    int absorbing_layer_nodes = 0; ///< sponge thickness inside the pressure sides (0: none)
+    /// Normalised runout Delta L = (L_f - L_i) / L_i at which a front meets the end of the domain
+    /// or its absorbing layer (column scenes; 0 otherwise).
+    double runout_room = 0;
+    std::vector<std::string> notes;    ///< sentences on choices the plan made, and why
     std::vector<std::string> warnings; ///< sentences about stability or accuracy risks
 };
 

@@ -15,6 +15,7 @@ private slots:
     void columnHoldsGrainsAtTargetPacking();
     void contactDurationUndamped();
     void warnsWhenTauNearHalfWithoutLes();
+    void saysHowFarAFrontCanRun();
 };
 
 void PlanTest::paperTimeStepFromTau() {
@@ -79,6 +80,29 @@ void PlanTest::warnsWhenTauNearHalfWithoutLes() {
     QVERIFY(!makePlan(spec).warnings.empty());
     spec.fluid.collision = "mrt_les";
     for (const auto& warning : makePlan(spec).warnings) QVERIFY(warning.find("LES") == std::string::npos);
+}
+
+void PlanTest::saysHowFarAFrontCanRun() {
+    // Room for the front: Delta L = (width - layer - L_i) / L_i, against the thesis's longest
+    // submerged runout (Delta L ~ 3.1): the paper's 0.2 m falls short, 0.4 m leaves room.
+    CaseSpec spec;
+    spec.fluid.resolution = 6; // h = 0.2 mm: the default 24-node layer is 4.8 mm thick
+    Plan plan = makePlan(spec);
+    const double li = plan.column.width_m;
+    QCOMPARE(plan.absorbing_layer_nodes, 24);
+    QVERIFY(std::abs(plan.runout_room - (0.2 - 24 * 0.2e-3 - li) / li) < 1e-9);
+    QCOMPARE(plan.notes.size(), std::size_t(1));
+    QVERIFY(plan.notes[0].find("short of") != std::string::npos);
+    spec.domain.width_m = 0.4;
+    plan = makePlan(spec);
+    QVERIFY(plan.runout_room > 5);
+    QVERIFY(plan.notes.at(0).find("beyond") != std::string::npos);
+    // No layer without an open side: the front meets the end wall.
+    spec.domain.right = spec.domain.top = "wall";
+    plan = makePlan(spec);
+    QCOMPARE(plan.absorbing_layer_nodes, 0);
+    QVERIFY(std::abs(plan.runout_room - (0.4 - li) / li) < 1e-9);
+    QVERIFY(plan.notes.at(0).find("the end of the domain") != std::string::npos);
 }
 
 QTEST_APPLESS_MAIN(PlanTest)
