@@ -7,12 +7,16 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <new>
 
 namespace lbdem::cli {
 
 int runCli(int argc, char** argv) {
     CLI::App app{"lbdem — 2D lattice-Boltzmann / discrete-element simulator of submerged "
                  "granular flows"};
+    app.footer("Exit codes: 0 success; 1 failure (a file that cannot be written, memory exhausted, failed runs "
+               "in a sweep or study); 2 bad input (case, options, output folder, checkpoint); 3 a run stopped by "
+               "a stability guard (lattice or DEM; summary.json gives the diagnosis).");
     app.require_subcommand(1);
     app.set_version_flag("--version", "lbdem 0.1.0");
     int exitCode = kExitOk;
@@ -41,6 +45,9 @@ int runCli(int argc, char** argv) {
         return kExitBadInput;
     } catch (const solver::SimulationError& error) {
         std::cerr << "lbdem: the simulation stopped: " << error.what() << "\n";
+        return kExitUnstable;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "lbdem: out of memory (lbdem info CASE estimates what a case needs)\n";
         return kExitFailure;
     } catch (const std::exception& error) {
         std::cerr << "lbdem: " << error.what() << "\n";

@@ -4,6 +4,7 @@
 #include "app/cli/Commands.h"
 #include "app/cli/ProfileSink.h"
 #include "app/cli/RunDriver.h"
+#include "app/cli/RunFolder.h"
 #include "app/cli/RunSinks.h"
 #include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
@@ -36,6 +37,7 @@ struct RunOptions {
     double renderEveryTc = 0;
     double untilTc = -1;
     bool quiet = false;
+    bool force = false;
 };
 
 void applyThreads(const solver::CaseSpec& spec) {
@@ -54,44 +56,69 @@ void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions
     RunDriver driver(simulation, driverOptions);
     SinkOptions sinkOptions{spec.output.vtk, spec.output.vtk_every, options.renderEveryTc,
                             spec.run.output_interval_tc, resumed};
+    // A resumed run writes again the frames after its checkpoint: the series keeps those before.
+    if (resumed) sinkOptions.keep_until_s = simulation.time() + 0.5 * simulation.plan().dt_s;
     for (auto& sink : makeRunSinks(dir.string(), sinkOptions)) driver.addSink(std::move(sink));
     driver.addSink(makeProfileSink(dir.string()));
     driver.run();
     if (!options.quiet) std::cout << "outputs in " << dir.string() << "/\n";
 }
 
+/// Build the Simulation of a case; a case that cannot be built (a packing that cannot reach its
+/// target, a column that does not fit) is bad input, named after where the case came from.
+std::unique_ptr<solver::Simulation> buildSimulation(const solver::CaseSpec& spec, const solver::Plan& plan,
+                                                    const std::string& source) {
+    try {
+        return std::make_unique<solver::Simulation>(spec, plan);
+    } catch (const solver::SimulationError& error) {
+        throw solver::InputError(source + ": the case cannot be built: " + error.what());
+    }
+}
+
 void runCase(const RunOptions& options) {
+    // Everything is checked before anything is written: the case, its plan, the folder, the
+    // machine's memory and disk, and the scene itself.
     const solver::CaseSpec spec = options.caseOptions.load();
     const solver::Plan plan = solver::makePlan(spec);
     const fs::path dir = options.out.empty() ? "results/" + spec.name : options.out;
-    std::error_code error;
-    fs::create_directories(dir, error);
-    if (error) throw std::runtime_error("cannot create the output folder " + dir.string() + ": " + error.message());
+    refuseExistingRun(dir, options.force);
+    checkResources(plan, dir, options.force, options.quiet);
+    applyThreads(spec);
+    const auto simulation =
+        buildSimulation(spec, plan, options.caseOptions.path.empty() ? "the case" : options.caseOptions.path);
+    prepareRunFolder(dir, options.force);
     io::writeCase(spec, (dir / "case.toml").string());
     io::writeFileAtomically((dir / "plan.json").string(), io::planToJson(plan).dump(2) + "\n");
     if (!options.quiet)
         for (const auto& warning : plan.warnings) std::cerr << "warning: " << warning << "\n";
-    applyThreads(spec);
-    solver::Simulation simulation(spec, plan);
-    drive(simulation, dir, options, false);
+    drive(*simulation, dir, options, false);
 }
 
 void resumeCase(const RunOptions& options) {
     const fs::path dir = options.resumeDir;
     const fs::path checkpoint = dir / "checkpoint.h5";
+    if (!fs::is_directory(dir))
+        throw solver::InputError(dir.string() + " is not a folder: lbdem resume takes the output folder of a run");
     if (!fs::exists(checkpoint))
-        throw solver::InputError(checkpoint.string() + ": no checkpoint to resume from (was the run started "
-                                 "with lbdem run --out " + dir.string() + "?)");
+        throw solver::InputError(
+            checkpoint.string() + ": no checkpoint to resume from; " +
+            (holdsRun(dir) ? "the run was stopped before it wrote one (at t = 0); start it again with "
+                             "lbdem run CASE --out " + dir.string() + " --force"
+                           : "was the run started with lbdem run --out " + dir.string() + "?"));
     const io::CheckpointData data = io::readCheckpoint(checkpoint.string());
     const solver::CaseSpec spec = io::parseCase(data.case_toml, checkpoint.string() + " (case_toml)");
     const solver::Plan plan = solver::makePlan(spec);
     applyThreads(spec);
-    solver::Simulation simulation(spec, plan);
-    simulation.restoreState(data.state);
+    const auto simulation = buildSimulation(spec, plan, checkpoint.string());
+    try {
+        simulation->restoreState(data.state);
+    } catch (const std::exception& error) {
+        throw solver::InputError(checkpoint.string() + " does not match the case it holds: " + error.what());
+    }
     if (!options.quiet)
-        std::cout << "resuming " << spec.name << " at t/tc = " << simulation.timeOverTc() << " (step "
-                  << simulation.stepIndex() << ")\n";
-    drive(simulation, dir, options, true);
+        std::cout << "resuming " << spec.name << " at t/tc = " << simulation->timeOverTc() << " (step "
+                  << simulation->stepIndex() << ")\n";
+    drive(*simulation, dir, options, true);
 }
 
 } // namespace
@@ -107,6 +134,9 @@ void addRunCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::NonNegativeNumber);
     command->add_option("--until-tc", options->untilTc, "Stop at this t / tau_c (resume later)");
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+    command->add_flag("--force", options->force,
+                      "Replace a run already in the output folder (its outputs are removed first), and run "
+                      "even when the plan's memory or outputs exceed this machine's memory or free disk");
     command->callback([options, &exitCode] {
         runCase(*options);
         exitCode = kExitOk;

@@ -13,7 +13,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <deque>
 #include <fstream>
 #include <iostream>
 
@@ -44,17 +43,13 @@ void trimTimeSeries(const std::string& path, long long step) {
     io::writeFileAtomically(path, kept);
 }
 
-/// Outputs the base stress is averaged over (DESIGN §6: effective stress at the base over the
-/// front, averaged over 5 outputs).
-constexpr std::size_t kBaseStressWindow = 5;
-
-/// The last `count` values of a column of an existing timeseries.csv, oldest first.
-std::deque<double> lastValues(const std::string& path, const std::string& name, std::size_t count) {
-    std::ifstream probe(path);
-    if (!probe) return {};
-    const auto values = io::readTimeSeries(path).column(name);
-    const std::size_t first = values.size() > count ? values.size() - count : 0;
-    return std::deque<double>(values.begin() + static_cast<std::ptrdiff_t>(first), values.end());
+/// Remove temporary checkpoint files a killed writer left behind (checkpoint.h5.tmp.PID).
+void removeStaleCheckpointFiles(const std::filesystem::path& dir) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("checkpoint.h5.tmp.", 0) == 0) std::filesystem::remove(entry.path(), error);
+    }
 }
 
 } // namespace
@@ -66,10 +61,7 @@ struct RunDriver::Progress {
     double nextCheckpointS = 0;
     double lastReportWall = -1e9;
     long long firstStep = 0;
-    double kePeak = 0, tKePeakOverTc = 0;
-    std::map<std::string, double> lastMetrics;
-    std::deque<double> baseStress; // the last kBaseStressWindow values, as printed
-    long long lastOutputStep = -1;
+    bool lineOpen = false; // a progress line without its newline is on stderr
     Clock::time_point start = Clock::now();
 };
 
@@ -86,22 +78,8 @@ void RunDriver::writeOutput() {
     metrics["t_s"] = m_simulation.time();
     metrics["t_over_tc"] = m_simulation.timeOverTc();
     metrics["step"] = static_cast<double>(m_simulation.stepIndex());
-    if (const auto base = metrics.find("base_normal_stress_front_pa"); base != metrics.end()) {
-        // The mean of the printed values, so that a resumed run (which reads them back from
-        // timeseries.csv) continues the same sequence bit for bit.
-        p.baseStress.push_back(io::printedValue(base->second));
-        if (p.baseStress.size() > kBaseStressWindow) p.baseStress.pop_front();
-        double sum = 0;
-        for (double v : p.baseStress) sum += v;
-        metrics["base_normal_stress_front_avg5_pa"] = sum / static_cast<double>(p.baseStress.size());
-    }
+    m_simulation.runDiagnostics().recordOutput(metrics, m_simulation.timeOverTc());
     p.series->append(metrics);
-    if (const auto ke = metrics.find("ke_over_ep0"); ke != metrics.end() && ke->second > p.kePeak) {
-        p.kePeak = ke->second;
-        p.tKePeakOverTc = m_simulation.timeOverTc();
-    }
-    p.lastMetrics = metrics;
-    p.lastOutputStep = m_simulation.stepIndex();
     if (!m_sinks.empty()) {
         const auto snapshot = m_simulation.snapshot();
         for (auto& sink : m_sinks) sink->write(*snapshot, p.outputIndex);
@@ -109,18 +87,30 @@ void RunDriver::writeOutput() {
     ++p.outputIndex;
 }
 
+void RunDriver::accountWork() {
+    const auto& p = *m_progress;
+    std::vector<double> stages;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k)
+        stages.push_back(m_simulation.timer().seconds(static_cast<solver::Stage>(k)));
+    m_simulation.runDiagnostics().setProcessWork(seconds(p.start), m_simulation.stepIndex() - p.firstStep, stages);
+}
+
 void RunDriver::writeCheckpoint() {
+    accountWork();
     io::CheckpointData data;
     data.case_toml = io::formatCase(m_simulation.spec());
     data.state = m_simulation.saveState();
     io::writeCheckpoint((m_options.dir / "checkpoint.h5").string(), data);
 }
 
-void RunDriver::writeSummary(double wallSeconds, bool finished, const std::string& stopReason) const {
+void RunDriver::writeSummary(bool finished, const std::string& stopReason) {
+    accountWork();
     const auto& plan = m_simulation.plan();
-    const auto& p = *m_progress;
-    const double steps = static_cast<double>(m_simulation.stepIndex() - p.firstStep);
+    const auto& diagnostics = m_simulation.runDiagnostics();
+    const double wallSeconds = diagnostics.wallSeconds();
+    const double steps = static_cast<double>(diagnostics.stepsTimed());
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
+    const auto& last = diagnostics.lastMetrics();
     nlohmann::json summary{
         {"case", m_simulation.spec().name},
         {"finished", finished},
@@ -131,22 +121,23 @@ void RunDriver::writeSummary(double wallSeconds, bool finished, const std::strin
         {"t_over_tc", m_simulation.timeOverTc()},
         {"wall_s", wallSeconds},
         {"mlups", wallSeconds > 0 ? nodes * steps / wallSeconds / 1e6 : 0.0},
-        {"final", p.lastMetrics},
+        {"final", last},
     };
     auto final = [&](const char* metric) {
-        const auto found = p.lastMetrics.find(metric);
-        return found == p.lastMetrics.end() ? nlohmann::json(nullptr) : nlohmann::json(found->second);
+        const auto found = last.find(metric);
+        return found == last.end() ? nlohmann::json(nullptr) : nlohmann::json(found->second);
     };
     summary["runout_final"] = final("runout_normalised");
     summary["packing_final"] = final("packing_fraction");
-    summary["ke_peak"] = p.kePeak;
-    summary["t_ke_peak_over_tc"] = p.tKePeakOverTc;
-    // Where the time went, per stage of the step (this process only; outputs are not counted).
+    summary["ke_peak"] = diagnostics.kePeak();
+    summary["t_ke_peak_over_tc"] = diagnostics.tKePeakOverTc();
+    // Where the time went, per stage of the step, over every process of the run (outputs are
+    // not counted). wall_s, mlups and stage_seconds are the only figures that depend on the machine.
     nlohmann::json stages = nlohmann::json::object();
-    for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k) {
-        const auto stage = static_cast<solver::Stage>(k);
-        stages[std::string(solver::stageName(stage))] = m_simulation.timer().seconds(stage);
-    }
+    const auto stageSeconds = diagnostics.stageSeconds();
+    for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k)
+        stages[std::string(solver::stageName(static_cast<solver::Stage>(k)))] =
+            k < stageSeconds.size() ? stageSeconds[k] : 0.0;
     summary["stage_seconds"] = stages;
     if (!stopReason.empty()) summary["stop_reason"] = stopReason;
     io::writeFileAtomically((m_options.dir / "summary.json").string(), summary.dump(2) + "\n");
@@ -167,6 +158,12 @@ void RunDriver::reportProgress(double wallSeconds, bool last) {
                  formatDuration(rate > 0 ? std::max(0.0, remainingSteps) / rate : 0).c_str(),
                  last ? "\n" : "");
     std::fflush(stderr);
+    p.lineOpen = !last;
+}
+
+void RunDriver::closeProgressLine() {
+    if (m_progress->lineOpen) std::fputs("\n", stderr);
+    m_progress->lineOpen = false;
 }
 
 void RunDriver::run() {
@@ -186,10 +183,8 @@ void RunDriver::run() {
                       << " (asked for " << endS / plan.tc_s << "): nothing to run, its outputs are left as they are\n";
         return;
     }
-    if (m_options.resumed) {
-        trimTimeSeries(seriesPath, m_simulation.stepIndex());
-        p.baseStress = lastValues(seriesPath, "base_normal_stress_front_pa", kBaseStressWindow);
-    }
+    removeStaleCheckpointFiles(m_options.dir);
+    if (m_options.resumed) trimTimeSeries(seriesPath, m_simulation.stepIndex());
     p.series = std::make_unique<io::TimeSeriesWriter>(seriesPath, m_options.resumed);
     p.firstStep = m_simulation.stepIndex();
     const double now = m_simulation.time();
@@ -198,7 +193,9 @@ void RunDriver::run() {
                         ? static_cast<long long>(std::floor((now + 0.5 * plan.dt_s) / outputInterval)) + 1
                         : 0;
     p.nextOutputS = m_options.resumed ? p.outputIndex * outputInterval : now;
-    p.nextCheckpointS = checkpointInterval > 0 ? now + checkpointInterval : 1e300;
+    // A fresh run checkpoints at t = 0 too (after its first output), so that it can be resumed
+    // whenever it is stopped.
+    p.nextCheckpointS = checkpointInterval <= 0 ? 1e300 : m_options.resumed ? now + checkpointInterval : now;
 
     p.start = Clock::now();
     try {
@@ -206,7 +203,7 @@ void RunDriver::run() {
             if (m_simulation.time() >= p.nextOutputS - halfStep) {
                 writeOutput();
                 p.nextOutputS = p.outputIndex * outputInterval;
-                writeSummary(seconds(p.start), false);
+                writeSummary(false);
             }
             if (m_simulation.time() >= p.nextCheckpointS - halfStep) {
                 writeCheckpoint();
@@ -219,14 +216,19 @@ void RunDriver::run() {
     } catch (const solver::SimulationError& error) {
         // The stability guard stopped the run: say so in summary.json, so that a study or a
         // sweep can tell an unstable run from a killed one without reading the log.
-        writeSummary(seconds(p.start), false, error.what());
+        closeProgressLine(); // the diagnosis goes on its own line
+        writeSummary(false, error.what());
+        throw;
+    } catch (...) {
+        closeProgressLine();
         throw;
     }
     // The flows end between output times: record the final state too, so that summary.json's
     // "final" is the end of the run (not done at an --until-tc stop, to keep resumes aligned).
-    if (m_simulation.finished() && m_simulation.stepIndex() != p.lastOutputStep) writeOutput();
+    if (m_simulation.finished() && m_simulation.stepIndex() != m_simulation.runDiagnostics().lastOutputStep())
+        writeOutput();
     writeCheckpoint();
-    writeSummary(seconds(p.start), m_simulation.finished());
+    writeSummary(m_simulation.finished());
     reportProgress(seconds(p.start), true);
 }
 

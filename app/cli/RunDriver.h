@@ -46,8 +46,10 @@ private:
     struct Progress;
     void writeOutput();
     void writeCheckpoint();
-    void writeSummary(double wallSeconds, bool finished, const std::string& stopReason = {}) const;
+    void accountWork();
+    void writeSummary(bool finished, const std::string& stopReason = {});
     void reportProgress(double wallSeconds, bool last);
+    void closeProgressLine();
 
     solver::Simulation& m_simulation;
     RunDriverOptions m_options;

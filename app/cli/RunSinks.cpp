@@ -20,9 +20,10 @@ namespace {
 /// Writes every n-th output as VTK XML files with .pvd series.
 class VtkSink final : public SnapshotSink {
 public:
-    VtkSink(const std::string& dir, int every, bool resumed) : m_writer(dir, resumed), m_every(every) {}
+    VtkSink(const std::string& dir, int every, bool resumed, double keepUntilS)
+        : m_writer(dir, resumed, keepUntilS), m_every(every) {}
     void write(const solver::Snapshot& snapshot, long long outputIndex) override {
-        if (outputIndex % m_every == 0) m_writer.write(snapshot);
+        if (outputIndex % m_every == 0) m_writer.write(snapshot, static_cast<int>(outputIndex));
     }
 
 private:
@@ -65,7 +66,9 @@ bool sinksAvailable() {
 std::vector<std::unique_ptr<SnapshotSink>> makeRunSinks(const std::string& dir, const SinkOptions& options) {
     std::vector<std::unique_ptr<SnapshotSink>> sinks;
 #ifdef LBDEM_HAS_VIS
-    if (options.vtk) sinks.push_back(std::make_unique<VtkSink>(dir, std::max(1, options.vtk_every), options.resumed));
+    if (options.vtk)
+        sinks.push_back(std::make_unique<VtkSink>(dir, std::max(1, options.vtk_every), options.resumed,
+                                                  options.keep_until_s));
     if (options.render_every_tc > 0) {
         const int every = std::max(1, static_cast<int>(std::lround(options.render_every_tc / options.output_interval_tc)));
         sinks.push_back(std::make_unique<PngSink>(dir, every));

@@ -16,6 +16,7 @@ struct SinkOptions {
     double render_every_tc = 0; ///< PNG frame every this many tau_c (0: none)
     double output_interval_tc = 0.25;
     bool resumed = false;
+    double keep_until_s = 1e300; ///< a resumed run keeps the VTK frames up to this time [s]
 };
 
 /// Whether this build can write VTK files and PNG frames.

@@ -5,6 +5,7 @@
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JobRunner.h"
+#include "app/cli/RunFolder.h"
 #include "app/cli/StudyMap.h"
 #include "app/cli/StudyMetrics.h"
 #include "app/cli/StudyPlot.h"
@@ -251,8 +252,9 @@ int runStudy(const StudyOptions& options) {
         if (fs::exists(dir / "checkpoint.h5")) {
             planned[k].argv = {planned[k].argv.front(), "resume", dir.string(), "--quiet"};
             if (!options.quiet) std::cout << "resume  " << planned[k].label << "\n";
-        } else if (!options.quiet) {
-            std::cout << "run     " << planned[k].label << "\n";
+        } else {
+            if (holdsRun(dir)) planned[k].argv.push_back("--force"); // a start that failed: nothing to continue
+            if (!options.quiet) std::cout << "run     " << planned[k].label << "\n";
         }
         jobs.push_back(planned[k]);
         settingOf.push_back(k);

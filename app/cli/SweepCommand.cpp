@@ -2,10 +2,13 @@
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
 #include "app/cli/JobRunner.h"
+#include "app/cli/RunFolder.h"
 #include "app/cli/SweepProgress.h"
 #include "app/cli/SweepReport.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/SweepFile.h"
+#include "solver/core/InputError.h"
+#include "solver/scene/Plan.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -13,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <cstdlib>
 #include <thread>
@@ -41,33 +45,53 @@ bool finishedRun(const fs::path& dir) {
     }
 }
 
+/// Parse and plan every case of a sweep, so that bad input is reported before anything is created
+/// or run; two cases with one name (one output folder) are refused, naming both files.
+std::vector<SweepEntry> loadEntries(const io::SweepSpec& sweep, const fs::path& out) {
+    std::vector<SweepEntry> entries;
+    std::map<std::string, std::string> fileOfName;
+    for (const auto& casePath : sweep.cases) {
+        const auto spec = io::loadCase(casePath, sweep.overrides);
+        (void)solver::makePlan(spec); // the planner's refusals (an unstable DEM step) come now too
+        const auto [first, fresh] = fileOfName.emplace(spec.name, casePath);
+        if (!fresh)
+            throw solver::InputError(casePath + ": the case name '" + spec.name + "' is also that of " +
+                                     first->second + "; each case of a sweep needs its own name (it names "
+                                     "the output folder)");
+        entries.push_back({spec, out / spec.name});
+    }
+    return entries;
+}
+
 int runSweep(const SweepOptions& options) {
     const io::SweepSpec sweep = io::loadSweep(options.file);
     const fs::path out = options.out;
+    const std::vector<SweepEntry> entries = loadEntries(sweep, out);
     fs::create_directories(out);
     const std::string self = selfExecutable();
     std::vector<Job> jobs;
-    std::vector<SweepEntry> entries, toRun;
-    for (const auto& casePath : sweep.cases) {
-        const auto spec = io::loadCase(casePath, sweep.overrides); // bad input fails before any run
-        const fs::path dir = out / spec.name;
-        entries.push_back({spec, dir});
+    std::vector<SweepEntry> toRun;
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        const auto& [spec, dir] = entries[k];
         if (finishedRun(dir)) {
             if (!options.quiet) std::cout << "skip    " << spec.name << " (finished)\n";
             continue;
         }
         Job job{spec.name, {self}, (dir / "log.txt").string()};
+        const bool resumable = fs::exists(dir / "checkpoint.h5");
+        const bool stale = !resumable && holdsRun(dir); // a start that failed: nothing to continue
         fs::create_directories(dir);
-        if (fs::exists(dir / "checkpoint.h5")) {
+        if (resumable) {
             job.argv.insert(job.argv.end(), {"resume", dir.string(), "--quiet"});
             if (!options.quiet) std::cout << "resume  " << spec.name << "\n";
         } else {
-            job.argv.insert(job.argv.end(), {"run", casePath, "--out", dir.string(), "--quiet"});
+            job.argv.insert(job.argv.end(), {"run", sweep.cases[k], "--out", dir.string(), "--quiet"});
+            if (stale) job.argv.push_back("--force");
             for (const auto& assignment : sweep.overrides) job.argv.insert(job.argv.end(), {"--set", assignment});
             if (!options.quiet) std::cout << "run     " << spec.name << "\n";
         }
         jobs.push_back(std::move(job));
-        toRun.push_back(entries.back());
+        toRun.push_back(entries[k]);
     }
     std::cout.flush();
     shareCoresBetweenJobs(options.jobs);
@@ -78,8 +102,10 @@ int runSweep(const SweepOptions& options) {
         progress.finished(result.index, result.wall_s);
         if (!options.quiet)
             std::cout << "[" << done << "/" << total << "] " << result.label
-                      << (result.exit_code == 0 ? " finished" : " FAILED (see its log.txt)") << " in "
-                      << static_cast<long long>(result.wall_s) << " s\n"
+                      << (result.exit_code == 0 ? " finished" : " FAILED") << " in "
+                      << static_cast<long long>(result.wall_s) << " s"
+                      << (result.exit_code == 0 ? "" : ": " + firstErrorLine(fs::path(jobs[result.index].log_path)))
+                      << "\n"
                       << std::flush;
     };
     JobTick onTick;

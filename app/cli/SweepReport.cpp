@@ -18,7 +18,7 @@ namespace lbdem::cli {
 namespace {
 
 struct Row {
-    std::string name, packing, slope, medium, status;
+    std::string name, packing, slope, medium, status, error;
     double runout = 0, endReachedTc = std::numeric_limits<double>::quiet_NaN(), kePeak = 0, tKePeak = 0, packingFinal = 0, wall = 0, mlups = 0;
     SweepFigureCase figure; ///< what the figures need of this case
 };
@@ -58,7 +58,10 @@ Row readRow(const SweepEntry& entry) {
                   entry.spec.fluid.enabled, "", 0.0, entry.dir};
     std::ifstream file(entry.dir / "summary.json");
     if (!file) {
-        row.status = row.figure.status = "missing";
+        // No summary: the run failed before its first output (its log says why) or never ran.
+        const bool failed = std::filesystem::exists(entry.dir / "log.txt");
+        row.status = row.figure.status = failed ? "failed" : "missing";
+        if (failed) row.error = firstErrorLine(entry.dir / "log.txt");
         return row;
     }
     try {
@@ -95,7 +98,28 @@ std::string figuresSection(const SweepFiguresResult& figures, const std::filesys
     return md;
 }
 
+/// The figures of a row for the table; blank (CSV) or a dash (Markdown) when the run left none.
+bool hasFigures(const Row& row) { return row.status != "missing" && row.status != "failed" && row.status != "unreadable"; }
+
+/// The cases that failed, each with the first error line of its log.
+std::string failuresSection(const std::vector<Row>& rows) {
+    std::string md;
+    for (const auto& r : rows)
+        if (r.status == "failed") md += "- " + r.name + ": " + r.error + "\n";
+    return md.empty() ? md : "\n## Failed cases\n\n" + md;
+}
+
 } // namespace
+
+std::string firstErrorLine(const std::filesystem::path& logPath) {
+    std::ifstream log(logPath);
+    std::string line, first;
+    while (std::getline(log, line)) {
+        if (first.empty() && !line.empty()) first = line;
+        if (line.rfind("lbdem:", 0) == 0) return line.substr(0, 300);
+    }
+    return first.empty() ? "no error message in " + logPath.string() : first.substr(0, 300);
+}
 
 SweepReportResult writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
                                    const std::filesystem::path& out) {
@@ -109,6 +133,12 @@ SweepReportResult writeSweepReport(const std::string& name, const std::vector<Sw
                      "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& r : rows) {
         const bool reached = std::isfinite(r.endReachedTc);
+        if (!hasFigures(r)) {
+            csv += r.name + "," + r.packing + "," + r.slope + "," + r.medium + "," + r.status + ",,,,,,,\n";
+            md += "| " + r.name + " | " + r.packing + " | " + r.slope + " | " + r.medium + " | " + r.status +
+                  " | - | - | - | - | - | - | - |\n";
+            continue;
+        }
         csv += r.name + "," + r.packing + "," + r.slope + "," + r.medium + "," + r.status + "," +
                number(r.runout, "%.6g") + "," + (reached ? number(r.endReachedTc, "%.6g") : "") + "," +
                number(r.kePeak, "%.6g") + "," + number(r.tKePeak, "%.6g") +
@@ -123,6 +153,7 @@ SweepReportResult writeSweepReport(const std::string& name, const std::vector<Sw
     std::vector<SweepFigureCase> figureCases;
     for (const auto& r : rows) figureCases.push_back(r.figure);
     const SweepFiguresResult figures = writeSweepFigures(name, figureCases, out);
+    md += failuresSection(rows);
     md += figuresSection(figures, out);
     io::writeFileAtomically((out / "sweep.csv").string(), csv);
     io::writeFileAtomically((out / "sweep.md").string(), md);

@@ -15,6 +15,10 @@ struct SweepEntry {
     std::filesystem::path dir;
 };
 
+/// The first line of a run's log that reports an error ("lbdem: ..."), or a note that the log
+/// has none; what a sweep shows for a case that failed.
+std::string firstErrorLine(const std::filesystem::path& logPath);
+
 /// What writeSweepReport wrote.
 struct SweepReportResult {
     std::vector<std::string> files; ///< sweep.csv, sweep.md and the PNG figures

@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
 
 #include <iostream>
 
@@ -13,8 +14,8 @@ int main(int argc, char** argv) {
     using namespace lbdem::studio;
     QCommandLineParser parser;
     parser.setApplicationDescription("Set up, run and watch lbdem cases.");
-    parser.addHelpOption();
-    parser.addVersionOption();
+    const QCommandLineOption help = parser.addHelpOption();
+    const QCommandLineOption version = parser.addVersionOption();
     parser.addPositionalArgument("case", "TOML case file to open.", "[CASE]");
     const QCommandLineOption set("set", "Override a case key, e.g. fluid.tau=0.51.", "section.key=value");
     const QCommandLineOption steps("run-steps", "Run this many steps at start.", "N");
@@ -28,6 +29,14 @@ int main(int argc, char** argv) {
     if (!parser.parse(arguments)) {
         std::cerr << "lbdem-studio: " << parser.errorText().toStdString() << "\n";
         return 2;
+    }
+    if (parser.isSet(help) || parser.isSet(version)) {
+        // Answered without a display: a core application is enough to print and exit.
+        QCoreApplication core(argc, argv);
+        QCoreApplication::setApplicationName("lbdem-studio");
+        QCoreApplication::setApplicationVersion(LBDEM_VERSION);
+        parser.process(core);
+        return 0;
     }
     ScriptOptions script;
     bool stepsOk = true;

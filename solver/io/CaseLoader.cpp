@@ -10,6 +10,7 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -180,6 +181,9 @@ CaseSpec parseCase(const std::string& text, const std::string& source,
 }
 
 CaseSpec loadCase(const std::string& path, const std::vector<std::string>& overrides) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        throw InputError(path + " is a folder, not a case file (lbdem resume takes a run's folder)");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path + ": cannot open the case file (does it exist?)");
     std::ostringstream text;

@@ -4,6 +4,8 @@
 #include "solver/scene/CaseSchema.h"
 
 #include <cstdio>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -43,10 +45,10 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
     const std::string temporary = path + ".tmp." + std::to_string(::getpid());
     {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) throw std::runtime_error("cannot write " + temporary);
+        if (!file) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
         file << text;
         file.flush();
-        if (!file) throw std::runtime_error("cannot write " + temporary);
+        if (!file) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
     }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);

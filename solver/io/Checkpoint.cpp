@@ -3,7 +3,12 @@
 
 #include <hdf5.h>
 
+#include "solver/core/InputError.h"
+
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <unistd.h>
@@ -15,7 +20,11 @@ namespace {
 constexpr const char* kRealGroup = "/reals";
 constexpr const char* kIntegerGroup = "/integers";
 constexpr const char* kCaseAttribute = "case_toml";
-constexpr int kFormatVersion = 1;
+constexpr const char* kChecksumAttribute = "checksum";
+// 2: a checksum of the case and every array (format 1 had none and is still read).
+constexpr int kFormatVersion = 2;
+// Arrays that may hold NaN legitimately: the metrics of the last output (undefined metrics).
+constexpr const char* kMayBeNonFinite = "run/last_metric/";
 
 /// Owns one HDF5 identifier and closes it with the matching function.
 class Handle {
@@ -102,11 +111,88 @@ std::string decodeName(std::string name) {
     return name;
 }
 
+/// A 64-bit hash of bytes in 8-byte words: FNV-1a's offset and prime with an extra xor-shift
+/// so that every bit of a word reaches every bit of the hash; a tail shorter than a word is
+/// zero-padded. Detects damage, not tampering.
+class Checksum {
+public:
+    void add(const void* data, std::size_t bytes) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        std::size_t k = 0;
+        for (; k + 8 <= bytes; k += 8) {
+            std::uint64_t word;
+            std::memcpy(&word, p + k, 8);
+            mix(word);
+        }
+        if (k < bytes) {
+            std::uint64_t word = 0;
+            std::memcpy(&word, p + k, bytes - k);
+            mix(word);
+        }
+        mix(bytes); // lengths count, so that moving bytes between arrays changes the sum
+    }
+    void add(const std::string& text) { add(text.data(), text.size()); }
+    std::string hex() const {
+        char text[24];
+        std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(m_hash));
+        return text;
+    }
+
+private:
+    void mix(std::uint64_t word) {
+        m_hash = (m_hash ^ word) * 0x100000001b3ULL;
+        m_hash ^= m_hash >> 29;
+    }
+    std::uint64_t m_hash = 0xcbf29ce484222325ULL;
+};
+
+/// The checksum of a checkpoint's case and arrays, in name order.
+std::string checksumOf(const CheckpointData& data) {
+    Checksum sum;
+    sum.add(data.case_toml);
+    for (const auto& [name, values] : data.state.reals) {
+        sum.add(name);
+        sum.add(values.data(), values.size() * sizeof(double));
+    }
+    for (const auto& [name, values] : data.state.integers) {
+        sum.add(name);
+        sum.add(values.data(), values.size() * sizeof(std::int64_t));
+    }
+    return sum.hex();
+}
+
+/// Refuse a checkpoint whose arrays fail the checksum or hold a value that is not finite.
+void verify(const std::string& path, const CheckpointData& data, const std::string& storedChecksum) {
+    if (!storedChecksum.empty() && storedChecksum != checksumOf(data))
+        throw solver::InputError(path + " is damaged: its case and arrays do not match the checksum written with "
+                                 "them; resume from a copy, or start the run again with lbdem run --force");
+    for (const auto& [name, values] : data.state.reals) {
+        if (name.rfind(kMayBeNonFinite, 0) == 0) continue;
+        for (const double value : values)
+            if (!std::isfinite(value))
+                throw solver::InputError(path + " is damaged: array '" + name +
+                                         "' holds a value that is not finite");
+    }
+}
+
+/// Why writing to path failed, as far as the system tells: errno and the space left.
+std::string writeFailure(const std::string& path) {
+    std::string cause = errno != 0 ? std::strerror(errno) : "unknown cause";
+    std::error_code error;
+    const auto space = std::filesystem::space(std::filesystem::path(path).parent_path().empty()
+                                                  ? std::filesystem::path(".")
+                                                  : std::filesystem::path(path).parent_path(),
+                                              error);
+    if (!error && space.available < (std::uintmax_t(1) << 20)) cause = "the disk is full";
+    return "cannot write the checkpoint " + path + ": " + cause;
+}
+
 void writeFile(const std::string& path, const CheckpointData& data) {
     Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
                 "cannot create " + path);
     writeStringAttribute(file.get(), kCaseAttribute, data.case_toml);
     writeStringAttribute(file.get(), "format", "lbdem checkpoint " + std::to_string(kFormatVersion));
+    writeStringAttribute(file.get(), kChecksumAttribute, checksumOf(data));
     Handle reals(H5Gcreate2(file.get(), kRealGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                  H5Gclose, "cannot create group");
     for (const auto& [name, values] : data.state.reals)
@@ -118,29 +204,8 @@ void writeFile(const std::string& path, const CheckpointData& data) {
     if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("cannot flush " + path);
 }
 
-} // namespace
-
-void writeCheckpoint(const std::string& path, const CheckpointData& data) {
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-    try {
-        writeFile(temporary, data);
-    } catch (...) {
-        std::remove(temporary.c_str());
-        throw;
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::remove(temporary.c_str());
-        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + error.message());
-    }
-}
-
-CheckpointData readCheckpoint(const std::string& path) {
-    if (!std::filesystem::exists(path)) throw std::runtime_error(path + " does not exist");
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // errors become exceptions with our messages
-    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
-                path + " is not a readable HDF5 checkpoint");
+CheckpointData readFile(const std::string& path) {
+    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "not an HDF5 file");
     CheckpointData data;
     data.case_toml = readStringAttribute(file.get(), kCaseAttribute);
     Handle reals(H5Gopen2(file.get(), kRealGroup, H5P_DEFAULT), H5Gclose, "missing group /reals");
@@ -151,7 +216,43 @@ CheckpointData readCheckpoint(const std::string& path) {
     for (const auto& name : linkNames(integers.get()))
         data.state.integers[decodeName(name)] =
             readDataset<std::int64_t>(integers.get(), name, H5T_NATIVE_INT64);
+    const bool hasChecksum = H5Aexists(file.get(), kChecksumAttribute) > 0;
+    verify(path, data, hasChecksum ? readStringAttribute(file.get(), kChecksumAttribute) : std::string());
     return data;
 }
+
+} // namespace
+
+void writeCheckpoint(const std::string& path, const CheckpointData& data) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // errors become one sentence, not an HDF5 trace
+    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+    errno = 0;
+    try {
+        writeFile(temporary, data);
+    } catch (const std::exception&) {
+        const std::string failure = writeFailure(path);
+        std::remove(temporary.c_str());
+        throw std::runtime_error(failure);
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::remove(temporary.c_str());
+        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + error.message());
+    }
+}
+
+CheckpointData readCheckpoint(const std::string& path) {
+    if (!std::filesystem::exists(path)) throw solver::InputError(path + " does not exist");
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // errors become exceptions with our messages
+    try {
+        return readFile(path);
+    } catch (const solver::InputError&) {
+        throw;
+    } catch (const std::exception& error) {
+        throw solver::InputError(path + " is not a readable lbdem checkpoint (" + error.what() + ")");
+    }
+}
+
 
 } // namespace lbdem::io

@@ -14,10 +14,14 @@ struct CheckpointData {
 };
 
 /// Write data to path as HDF5 through a temporary file renamed over path, so that a run killed
-/// at any moment leaves either the previous or the new checkpoint, never a torn one.
+/// at any moment leaves either the previous or the new checkpoint, never a torn one; a checksum of
+/// the case and the arrays goes with them. Throws std::runtime_error with one sentence naming the
+/// file and the cause (a full disk) when it cannot be written.
 void writeCheckpoint(const std::string& path, const CheckpointData& data);
 
-/// Read a checkpoint written by writeCheckpoint; throws std::runtime_error naming the file.
+/// Read a checkpoint written by writeCheckpoint. Throws InputError naming the file when it is not
+/// a readable checkpoint, its case and arrays fail the checksum written with them, or an array
+/// holds a value that is not finite.
 CheckpointData readCheckpoint(const std::string& path);
 
 } // namespace lbdem::io

@@ -18,12 +18,15 @@ nlohmann::json planToJson(const solver::Plan& plan) {
         {"u_expected_m_s", plan.u_expected_m_s},
         {"mach", plan.mach},
         {"dem_dt_s", plan.dem_dt_s},
+        {"dem_dt_safe_s", plan.dem_dt_safe_s},
+        {"dem_dt_stable_s", plan.dem_dt_stable_s},
         {"substeps", plan.substeps},
         {"grains", plan.grains},
         {"tc_s", plan.tc_s},
         {"end_time_s", plan.end_time_s},
         {"steps", plan.steps},
         {"memory_bytes", plan.memory_bytes},
+        {"output_bytes", plan.output_bytes},
         {"estimated_run_s", plan.estimated_run_s},
         {"column_width_m", plan.column.width_m},
         {"column_height_m", plan.column.height_m},
@@ -60,12 +63,14 @@ std::string formatPlan(const solver::Plan& plan) {
     line("grains", "%.0f", static_cast<double>(plan.grains), "discs");
     line("column width L_i", "%.4g", plan.column.width_m, "m");
     line("column height H_i", "%.4g", plan.column.height_m, "m");
-    line("DEM time step", "%.4g", plan.dem_dt_s, "s");
+    line("DEM time step", "%.4g", plan.dem_dt_s, "s (used)");
+    line("DEM stable step", "%.4g", plan.dem_dt_stable_s, "s (stability limit)");
     text += "Run\n";
     line("tau_c", "%.4g", plan.tc_s, "s");
     line("end time", "%.4g", plan.end_time_s, "s");
     line("steps", "%.0f", static_cast<double>(plan.steps), "");
-    line("memory", "%.1f", plan.memory_bytes / 1048576.0, "MiB");
+    line("memory", "%.1f", plan.memory_bytes / 1048576.0, "MiB (estimate)");
+    line("outputs", "%.1f", plan.output_bytes / 1048576.0, "MiB (upper bound, all files of the run)");
     line("estimated run time", "%.0f", plan.estimated_run_s, "s");
     for (const auto& note : plan.notes) text += "note: " + note + "\n";
     for (const auto& warning : plan.warnings) text += "warning: " + warning + "\n";

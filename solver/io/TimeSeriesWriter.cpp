@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -45,7 +47,7 @@ TimeSeriesWriter::TimeSeriesWriter(const std::string& path, bool append) : m_pat
         if (existing && std::getline(existing, header) && !header.empty()) m_columns = splitLine(header);
     }
     m_file.open(path, m_columns.empty() ? std::ios::trunc : std::ios::app);
-    if (!m_file) throw std::runtime_error("cannot write " + path);
+    if (!m_file) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
 }
 
 void TimeSeriesWriter::append(const std::map<std::string, double>& metrics) {
@@ -64,7 +66,7 @@ void TimeSeriesWriter::append(const std::map<std::string, double>& metrics) {
     }
     m_file << "\n";
     m_file.flush();
-    if (!m_file) throw std::runtime_error("cannot write " + m_path);
+    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));
 }
 
 std::vector<double> TimeSeriesTable::column(const std::string& name) const {

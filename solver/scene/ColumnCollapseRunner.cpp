@@ -2,6 +2,7 @@
 #include "solver/scene/ColumnCollapseRunner.h"
 
 #include "solver/coupling/Coupling.h"
+#include "solver/dem/DemGuard.h"
 #include "solver/diagnostics/MassDiagnostics.h"
 #include "solver/lattice/AbsorbingLayer.h"
 #include "solver/lattice/StabilityGuard.h"
@@ -177,6 +178,7 @@ public:
 
     void restore(const StateArchive& archive) override {
         restoreColumnState(archive, m_column);
+        dem::checkRestoredGrains(m_column.system().particles(), m_spec.domain.width_m, m_spec.domain.height_m);
         if (!m_lattice) return;
         restoreLatticeState(archive, *m_lattice);
         coupling::CouplingState state;

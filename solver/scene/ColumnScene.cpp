@@ -2,7 +2,9 @@
 #include "solver/scene/ColumnScene.h"
 
 #include "solver/core/InputError.h"
+#include "solver/dem/DemGuard.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -114,11 +116,13 @@ void ColumnScene::releaseGateWhenDue() {
 void ColumnScene::step() {
     releaseGateWhenDue();
     m_system.step(m_dt);
+    dem::checkGrainMotion(m_system.particles(), m_dt, m_system.time());
 }
 
 void ColumnScene::advance(double dt, int substeps) {
     releaseGateWhenDue();
     m_system.advance(dt, substeps);
+    dem::checkGrainMotion(m_system.particles(), dt / std::max(substeps, 1), m_system.time());
 }
 
 void ColumnScene::fillSnapshot(Snapshot& snapshot) const {

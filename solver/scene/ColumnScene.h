@@ -37,9 +37,11 @@ public:
     /// the packing must rest on y = 0 between x = 0 and its width.
     ColumnScene(const CaseSpec& spec, const Plan& plan, dem::Packing packing);
 
-    /// Advance one DEM step of the planned length.
+    /// Advance one DEM step of the planned length; throws SimulationError naming the DEM when
+    /// the grains have become unstable.
     void step();
-    /// Advance dt in substeps equal steps, external loads held fixed (the fluid-coupling step).
+    /// Advance dt in substeps equal steps, external loads held fixed (the fluid-coupling step);
+    /// throws SimulationError naming the DEM when the grains have become unstable.
     void advance(double dt, int substeps);
 
     double time() const { return m_system.time(); }

@@ -31,13 +31,16 @@ struct Plan {
     double nu_lattice = 0;    ///< lattice viscosity (tau - 1/2) / 3
     double u_expected_m_s = 0; ///< the velocity scale the Mach number refers to
     double mach = 0;          ///< u_expected dt / h / c_s
-    double dem_dt_s = 0;      ///< DEM time step
+    double dem_dt_s = 0;      ///< DEM time step the run uses (dt_s / substeps when coupled)
+    double dem_dt_safe_s = 0; ///< grains.dt_safety times the shortest contact duration
+    double dem_dt_stable_s = 0; ///< stability limit of the explicit DEM integrator (packed grains)
     int substeps = 1;         ///< DEM sub-steps per fluid step
     long long grains = 0;     ///< number of discs
     double tc_s = 0;          ///< tau_c = sqrt(H_i / g); the time unit of the run
     double end_time_s = 0;    ///< physical end time
     long long steps = 0;      ///< fluid (or DEM) steps to the end time
     std::size_t memory_bytes = 0; ///< estimated solver memory
+    std::size_t output_bytes = 0; ///< estimated size of everything the run writes (upper bound)
     double estimated_run_s = 0;   ///< rough wall time on this class of machine
     ColumnGeometry column;        ///< the initial column (zero when there are no grains)
     int absorbing_layer_nodes = 0; ///< sponge thickness inside the pressure sides (0: none)
@@ -48,8 +51,15 @@ struct Plan {
     std::vector<std::string> warnings; ///< sentences about stability or accuracy risks
 };
 
-/// Compute the plan of a validated case.
+/// Compute the plan of a validated case. Throws InputError naming coupling.substeps when the
+/// DEM step it gives is beyond the stability limit of the integrator.
 Plan makePlan(const CaseSpec& spec);
+
+/// Critical step of the explicit (velocity-Verlet) integrator for a linear spring-dashpot
+/// contact: (2 / omega) (sqrt(1 + zeta^2) - zeta), omega = sqrt(k / m_eff), zeta the damping
+/// ratio of the restitution (the central-difference bound with viscous damping, Belytschko,
+/// Liu & Moran, Nonlinear Finite Elements, 2000, section 6.3).
+double stableDemStep(double stiffness, double effectiveMass, double restitution);
 
 /// Duration of a binary linear spring-dashpot contact between discs of effective mass m_eff.
 double contactDuration(double stiffness, double effectiveMass, double restitution);

@@ -56,12 +56,14 @@ StateArchive Simulation::saveState() const {
     StateArchive archive;
     archive.integers["simulation/step"] = {m_state->step};
     m_state->runner->save(archive);
+    m_diagnostics.save(archive);
     return archive;
 }
 
 void Simulation::restoreState(const StateArchive& archive) {
     m_state->step = archive.integer("simulation/step").at(0);
     m_state->runner->restore(archive);
+    m_diagnostics.restore(archive);
 }
 
 } // namespace lbdem::solver

@@ -5,6 +5,7 @@
 #include "solver/core/StateArchive.h"
 #include "solver/scene/CaseSpec.h"
 #include "solver/scene/Plan.h"
+#include "solver/scene/RunDiagnostics.h"
 #include "solver/scene/Snapshot.h"
 
 #include <map>
@@ -44,7 +45,13 @@ public:
 
     const CaseSpec& spec() const { return m_spec; }
     const Plan& plan() const { return m_plan; }
-    /// The complete state (time, step, lattice, grains, contact history) for a checkpoint.
+    /// The running diagnostics (peak, averaging window, work totals); fed by whoever drives the
+    /// run, saved and restored with the state.
+    RunDiagnostics& runDiagnostics() { return m_diagnostics; }
+    const RunDiagnostics& runDiagnostics() const { return m_diagnostics; }
+
+    /// The complete state (time, step, lattice, grains, contact history, running diagnostics)
+    /// for a checkpoint.
     StateArchive saveState() const;
     /// Restore a state saved by saveState() of a Simulation built from the same case and plan;
     /// continuing then gives bit-for-bit the same results as never having stopped.
@@ -64,6 +71,7 @@ private:
     CaseSpec m_spec;
     Plan m_plan;
     StageTimer m_timer;
+    RunDiagnostics m_diagnostics;
     std::unique_ptr<State> m_state;
 };
 

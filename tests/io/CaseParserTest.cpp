@@ -56,7 +56,7 @@ void CaseParserTest::badCase() {
 
 void CaseParserTest::defaultsRoundTrip() {
     solver::CaseSpec changed;
-    changed.name = "round \"trip\"";
+    changed.name = "round_trip-2.v1"; // every character a case name may hold
     changed.fluid.tau = 0.5123;
     changed.grains.count = 321;
     changed.fluid.enabled = false;

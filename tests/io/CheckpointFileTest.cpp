@@ -1,4 +1,5 @@
 // checkpoint.h5 and timeseries.csv round trips.
+#include "solver/core/InputError.h"
 #include "solver/io/Checkpoint.h"
 #include "solver/io/TimeSeriesWriter.h"
 
@@ -18,6 +19,8 @@ private slots:
     void roundTripIsBitForBit();
     void replacesAtomically();
     void rejectsTornFile();
+    void rejectsDamagedArrays();
+    void rejectsNonFiniteValues();
     void timeSeriesRoundTrip();
 };
 
@@ -62,6 +65,40 @@ void CheckpointFileTest::rejectsTornFile() {
     std::ofstream(path) << "not an HDF5 file";
     QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(path), std::runtime_error);
     QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(dir.filePath("missing.h5").toStdString()), std::runtime_error);
+}
+
+void CheckpointFileTest::rejectsDamagedArrays() {
+    // One flipped byte inside an array's data fails the checksum written with it.
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("checkpoint.h5").toStdString();
+    io::CheckpointData data;
+    data.case_toml = "schema = 1\n";
+    data.state.reals["lattice/f"] = std::vector<double>(4096, 0.125);
+    io::writeCheckpoint(path, data);
+    QCOMPARE(io::readCheckpoint(path).state.real("lattice/f").size(), std::size_t(4096));
+    std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const double eighth = 0.125;
+    const auto at = bytes.find(std::string(reinterpret_cast<const char*>(&eighth), sizeof eighth));
+    QVERIFY(at != std::string::npos);
+    file.seekp(static_cast<std::streamoff>(at + 1000 * sizeof(double) + 3));
+    file.put('\x5a');
+    file.close();
+    QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(path), solver::InputError);
+}
+
+void CheckpointFileTest::rejectsNonFiniteValues() {
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("checkpoint.h5").toStdString();
+    io::CheckpointData data;
+    data.state.reals["dem/x"] = {0.1, std::numeric_limits<double>::infinity()};
+    io::writeCheckpoint(path, data);
+    QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(path), solver::InputError);
+    // Metrics of the last output may be undefined (NaN) and are kept.
+    data.state.reals.erase("dem/x");
+    data.state.reals["run/last_metric/froude_densimetric"] = {std::numeric_limits<double>::quiet_NaN()};
+    io::writeCheckpoint(path, data);
+    QVERIFY(std::isnan(io::readCheckpoint(path).state.real("run/last_metric/froude_densimetric")[0]));
 }
 
 void CheckpointFileTest::timeSeriesRoundTrip() {

@@ -39,6 +39,7 @@ private slots:
     void runReaderRebuildsSnapshot();
     void dryRunHasNoFluidSeries();
     void resumeContinuesNumbering();
+    void resumeDropsFramesAfterCheckpoint();
 
 private:
     vtkSmartPointer<vtkUnstructuredGrid> readGrid(const std::string& name) const;
@@ -190,6 +191,23 @@ void VtkExportTest::resumeContinuesNumbering() {
     const auto entries = vis::readPvd(dir.path().toStdString() + "/vtk/particles.pvd");
     QCOMPARE(static_cast<int>(entries.size()), 3);
     QCOMPARE(entries[2].file, std::string("particles_000002.vtu"));
+}
+
+void VtkExportTest::resumeDropsFramesAfterCheckpoint() {
+    // A run killed after writing frames 0-2 resumes from a checkpoint at frame 1's time: frame 2
+    // leaves the series and is written again under its own number, never twice.
+    QTemporaryDir dir;
+    support::writeSyntheticRun(dir.path().toStdString(), 3);
+    const auto before = vis::readPvd(dir.path().toStdString() + "/vtk/particles.pvd");
+    vis::VtkRunWriter resumed(dir.path().toStdString(), true, before[1].time_s);
+    QCOMPARE(resumed.frameCount(), 2);
+    QCOMPARE(resumed.write(support::syntheticSnapshot(2), 2), 2);
+    for (const char* series : {"particles", "contacts", "fluid", "outline"}) {
+        const auto entries = vis::readPvd(dir.path().toStdString() + "/vtk/" + series + ".pvd");
+        QCOMPARE(static_cast<int>(entries.size()), 3);
+        QCOMPARE(entries[2].time_s, before[2].time_s);
+        QVERIFY(entries[2].file.find("_000002.") != std::string::npos);
+    }
 }
 
 QTEST_GUILESS_MAIN(VtkExportTest)

@@ -1,7 +1,9 @@
 // Planning: the paper's numbers follow from its SI parameters (DESIGN §4, §5b).
+#include "solver/core/InputError.h"
 #include "solver/scene/Plan.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 
 using namespace lbdem::solver;
@@ -16,6 +18,9 @@ private slots:
     void contactDurationUndamped();
     void warnsWhenTauNearHalfWithoutLes();
     void saysHowFarAFrontCanRun();
+    void demStepIsTheOneUsed();
+    void substepsBeyondStabilityRefused();
+    void estimatesOutputBytes();
 };
 
 void PlanTest::paperTimeStepFromTau() {
@@ -103,6 +108,48 @@ void PlanTest::saysHowFarAFrontCanRun() {
     QCOMPARE(plan.absorbing_layer_nodes, 0);
     QVERIFY(std::abs(plan.runout_room - (0.4 - li) / li) < 1e-9);
     QVERIFY(plan.notes.at(0).find("the end of the domain") != std::string::npos);
+}
+
+void PlanTest::demStepIsTheOneUsed() {
+    // A coupled run advances the DEM by dt / substeps: that is the step the plan reports.
+    CaseSpec spec;
+    const Plan plan = makePlan(spec);
+    QVERIFY(plan.substeps > 1);
+    QCOMPARE(plan.dem_dt_s, plan.dt_s / plan.substeps);
+    QVERIFY(plan.dem_dt_s <= plan.dem_dt_safe_s);
+    QVERIFY(plan.dem_dt_safe_s < plan.dem_dt_stable_s);
+}
+
+void PlanTest::substepsBeyondStabilityRefused() {
+    CaseSpec spec;
+    spec.coupling.substeps = 1;
+    try {
+        makePlan(spec);
+        QFAIL("one DEM sub-step per fluid step must be refused");
+    } catch (const InputError& error) {
+        QCOMPARE(QString::fromStdString(error.key()), QString("coupling.substeps"));
+        QVERIFY2(std::string(error.what()).find("stability limit") != std::string::npos, error.what());
+    }
+    // Between the safety factor and the stability limit: planned, with a warning.
+    const Plan automatic = makePlan(CaseSpec{});
+    spec.coupling.substeps = static_cast<int>(std::ceil(automatic.dt_s / automatic.dem_dt_stable_s)) + 1;
+    const Plan plan = makePlan(spec);
+    QVERIFY(plan.dem_dt_s > plan.dem_dt_safe_s);
+    QCOMPARE(std::count_if(plan.warnings.begin(), plan.warnings.end(),
+                           [](const std::string& w) { return w.find("coupling.substeps") != std::string::npos; }),
+             std::ptrdiff_t(1));
+}
+
+void PlanTest::estimatesOutputBytes() {
+    CaseSpec spec;
+    const Plan every = makePlan(spec);
+    QVERIFY(every.output_bytes > 0);
+    QVERIFY(every.memory_bytes > every.output_bytes / 100);
+    spec.output.vtk = false;
+    const Plan none = makePlan(spec);
+    QVERIFY(none.output_bytes < every.output_bytes / 5); // VTK dominates
+    spec.fluid.resolution *= 2;
+    QVERIFY(makePlan(spec).memory_bytes > 3 * every.memory_bytes); // four times the nodes
 }
 
 QTEST_APPLESS_MAIN(PlanTest)

@@ -6,6 +6,7 @@
 #include <vtkXMLDataElement.h>
 #include <vtkXMLUtilities.h>
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +62,14 @@ PvdSeries::PvdSeries(std::string path, bool resume) : m_path(std::move(path)) {
 void PvdSeries::append(double time_s, const std::string& file) {
     m_entries.push_back({time_s, file});
     rewrite();
+}
+
+void PvdSeries::dropAfter(double time_s) {
+    const auto before = m_entries.size();
+    m_entries.erase(std::remove_if(m_entries.begin(), m_entries.end(),
+                                   [time_s](const PvdEntry& entry) { return entry.time_s > time_s; }),
+                    m_entries.end());
+    if (m_entries.size() != before) rewrite();
 }
 
 void PvdSeries::rewrite() const {

@@ -22,6 +22,8 @@ public:
 
     /// Adds `file` (relative to the .pvd's folder) at `time_s` and rewrites the .pvd.
     void append(double time_s, const std::string& file);
+    /// Drops the entries after `time_s` (a resumed run writes them again) and rewrites the .pvd.
+    void dropAfter(double time_s);
     /// The entries written so far, in order of appending.
     const std::vector<PvdEntry>& entries() const { return m_entries; }
     /// Where the .pvd lives.

@@ -9,6 +9,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 #include <vtkXMLWriter.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -46,18 +47,20 @@ std::string vtkFrameFileName(const std::string& series, int frame, const std::st
     return series + "_" + number + "." + extension;
 }
 
-VtkRunWriter::VtkRunWriter(const std::string& runDir, bool resume)
+VtkRunWriter::VtkRunWriter(const std::string& runDir, bool resume, double keepUntilS)
     : m_dir(runDir + "/vtk"), m_particles(m_dir + "/particles.pvd", resume),
       m_contacts(m_dir + "/contacts.pvd", resume), m_fluid(m_dir + "/fluid.pvd", resume),
       m_outline(m_dir + "/outline.pvd", resume) {
     std::error_code error;
     std::filesystem::create_directories(m_dir, error);
     if (error) throw std::runtime_error("cannot create " + m_dir + ": " + error.message());
+    for (PvdSeries* series : {&m_particles, &m_contacts, &m_fluid, &m_outline}) series->dropAfter(keepUntilS);
     m_frame = static_cast<int>(m_particles.entries().size());
 }
 
-int VtkRunWriter::write(const solver::Snapshot& snapshot) {
-    const int frame = m_frame;
+int VtkRunWriter::write(const solver::Snapshot& snapshot) { return write(snapshot, m_frame); }
+
+int VtkRunWriter::write(const solver::Snapshot& snapshot, int frame) {
     const double t = snapshot.time_s;
     // The particles series goes last: readers take its entries as the list of complete frames.
     const std::string contacts = vtkFrameFileName("contacts", frame, "vtu");
@@ -75,7 +78,7 @@ int VtkRunWriter::write(const solver::Snapshot& snapshot) {
     const std::string particles = vtkFrameFileName("particles", frame, "vtu");
     writeGrid(particlesToVtk(snapshot), m_dir, particles);
     m_particles.append(t, particles);
-    ++m_frame;
+    m_frame = std::max(m_frame, frame) + 1;
     return frame;
 }
 

@@ -16,12 +16,16 @@ namespace lbdem::vis {
 /// valid series. Needs no display.
 class VtkRunWriter {
 public:
-    /// Writes into `runDir`/vtk (created if needed); `resume` keeps the existing .pvd entries and
-    /// continues the frame numbering after them.
-    explicit VtkRunWriter(const std::string& runDir, bool resume = false);
+    /// Writes into `runDir`/vtk (created if needed); `resume` keeps the existing .pvd entries up
+    /// to time `keepUntilS` (those after it were written after the checkpoint the run resumes
+    /// from, and are written again) and continues the frame numbering after them.
+    explicit VtkRunWriter(const std::string& runDir, bool resume = false, double keepUntilS = 1e300);
 
-    /// Writes one frame; returns its number (NNNNNN in the file names).
+    /// Writes one frame numbered after the previous one; returns its number (NNNNNN in the names).
     int write(const solver::Snapshot& snapshot);
+    /// Writes one frame with the given number (a run's output index, so that VTK files, profiles
+    /// and timeseries.csv rows share numbers); returns it.
+    int write(const solver::Snapshot& snapshot, int frame);
     /// The folder the files go to (RUN_DIR/vtk).
     const std::string& directory() const { return m_dir; }
     /// Frames written so far (including resumed ones).
