@@ -288,7 +288,7 @@ private:
                 ++nodes;
             }
         const auto& p = m_column.system().particles();
-        const std::vector<bool> main = largestConnectedGroup(viewOf(p), m_params.contact_gap_m);
+        const std::vector<bool> main = mainMass(viewOf(p), m_params.contact_gap_m, m_params.bridge_gap_m);
         double speed = 0;
         std::size_t grains = 0;
         for (std::size_t k = 0; k < p.size(); ++k)
