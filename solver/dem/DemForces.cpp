@@ -140,29 +140,31 @@ void DemSystem::finishForces(Real h, bool kick) {
     const Real *ex = m_p.ext_fx.data(), *ey = m_p.ext_fy.data(), *et = m_p.ext_torque.data();
     const Real gx = m_gravity.x(), gy = m_gravity.y();
     const Real turn = m_material.contact_torque ? 1 : 0; // 1 * t == t: the default is unchanged
-    // Each disc sums its loads in one fixed order (body and external load, pairs where it is the
-    // partner j by increasing i, pairs of its own row by increasing j, its walls by index), so the
-    // result is the same bits whichever thread handles it.
+    // Each disc sums its contact loads in one fixed order (pairs where it is the partner j by
+    // increasing i, pairs of its own row by increasing j, its walls by index), then adds them to
+    // its body and external load: the same bits whichever thread handles it, and the same bits
+    // as the single-threaded per-disc buffers this replaced.
 #pragma omp parallel for num_threads(threadCount()) schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-        Real sx = m[i] * gx + ex[i], sy = m[i] * gy + ey[i], st = et[i];
+        Real cx = 0, cy = 0, ct = 0;
         for (std::uint32_t k = inStart[i]; k < inStart[i + 1]; ++k) {
             const PairLoad& l = loads[inSlots[k]];
-            sx += l.fx;
-            sy += l.fy;
-            st += turn * l.tj;
+            cx += l.fx;
+            cy += l.fy;
+            ct += turn * l.tj;
         }
         for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
             const PairLoad& l = loads[k];
-            sx -= l.fx;
-            sy -= l.fy;
-            st += turn * l.ti;
+            cx -= l.fx;
+            cy -= l.fy;
+            ct += turn * l.ti;
         }
         for (std::uint32_t k = wallStart[i]; k < wallStart[i + 1]; ++k) {
-            sx += wslots[k].fx;
-            sy += wslots[k].fy;
-            st += turn * wslots[k].torque;
+            cx += wslots[k].fx;
+            cy += wslots[k].fy;
+            ct += turn * wslots[k].torque;
         }
+        const Real sx = m[i] * gx + ex[i] + cx, sy = m[i] * gy + ey[i] + cy, st = et[i] + ct;
         fx[i] = sx;
         fy[i] = sy;
         tq[i] = st;

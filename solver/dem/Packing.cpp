@@ -78,7 +78,12 @@ void settle(DemSystem& system, Real dt, Real tMin, Real tMax, Real vTol) {
 /// a sudden jump would release the soft overlaps' energy at once and loosen the column.
 void relaxToRunStiffness(DemSystem& system, const PackingRequest& req, const Material& prep, Real fall, Real vTol) {
     const Real lightest = discMass(req.d_min / 2, prep.density);
+    // The floor and torque options act from the release on: the column is prepared with the
+    // grains' own rolling resistance on the walls and torque-carrying contacts whatever they are,
+    // so that a cached column stays the one the generator makes.
     Material stage = req.material;
+    stage.wall_rolling_resistance = stage.rolling_resistance;
+    stage.contact_torque = true;
     for (int k = 1; k <= kRelaxStages; ++k) {
         const Real scale = std::pow(kSoften, Real(k) / kRelaxStages) / kSoften;
         stage.normal_stiffness = req.material.normal_stiffness * scale;
@@ -104,7 +109,8 @@ Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const
     prep.restitution = kPrepRestitution;
     prep.friction = prep.wall_friction = friction;
     // Some rolling resistance stops discs from rolling for ever on the free surface.
-    prep.rolling_resistance = kPrepRollingResistance;
+    prep.rolling_resistance = prep.wall_rolling_resistance = kPrepRollingResistance;
+    prep.contact_torque = true;
     DemSystem system(prep);
     system.setThreads(1); // the column must not depend on the thread count (generatePacking)
     system.reserve(radii.size());
