@@ -166,13 +166,30 @@ void RunDriver::closeProgressLine() {
     m_progress->lineOpen = false;
 }
 
+void RunDriver::startSeries(double outputInterval, double checkpointInterval) {
+    auto& p = *m_progress;
+    const std::string seriesPath = (m_options.dir / "timeseries.csv").string();
+    removeStaleCheckpointFiles(m_options.dir);
+    if (m_options.resumed) trimTimeSeries(seriesPath, m_simulation.stepIndex());
+    p.series = std::make_unique<io::TimeSeriesWriter>(seriesPath, m_options.resumed);
+    p.firstStep = m_simulation.stepIndex();
+    const double now = m_simulation.time();
+    // A resumed run has written every output time up to now (within half a step).
+    p.outputIndex = m_options.resumed
+                        ? static_cast<long long>(std::floor((now + 0.5 * m_simulation.plan().dt_s) / outputInterval)) + 1
+                        : 0;
+    p.nextOutputS = m_options.resumed ? p.outputIndex * outputInterval : now;
+    // A fresh run checkpoints at t = 0 too (after its first output), so that it can be resumed
+    // whenever it is stopped.
+    p.nextCheckpointS = checkpointInterval <= 0 ? 1e300 : m_options.resumed ? now + checkpointInterval : now;
+}
+
 void RunDriver::run() {
     auto& p = *m_progress;
     const auto& spec = m_simulation.spec();
     const auto& plan = m_simulation.plan();
     const double outputInterval = spec.run.output_interval_tc * plan.tc_s;
     const double checkpointInterval = spec.output.checkpoint_interval_tc * plan.tc_s;
-    const std::string seriesPath = (m_options.dir / "timeseries.csv").string();
     const double endS = m_options.until_tc > 0 ? m_options.until_tc * plan.tc_s : plan.end_time_s;
     const double halfStep = 0.5 * plan.dt_s;
     // A resumed run already at (or past) the requested end is left as it is: no output, no
@@ -183,19 +200,7 @@ void RunDriver::run() {
                       << " (asked for " << endS / plan.tc_s << "): nothing to run, its outputs are left as they are\n";
         return;
     }
-    removeStaleCheckpointFiles(m_options.dir);
-    if (m_options.resumed) trimTimeSeries(seriesPath, m_simulation.stepIndex());
-    p.series = std::make_unique<io::TimeSeriesWriter>(seriesPath, m_options.resumed);
-    p.firstStep = m_simulation.stepIndex();
-    const double now = m_simulation.time();
-    // A resumed run has written every output time up to now (within half a step).
-    p.outputIndex = m_options.resumed
-                        ? static_cast<long long>(std::floor((now + 0.5 * plan.dt_s) / outputInterval)) + 1
-                        : 0;
-    p.nextOutputS = m_options.resumed ? p.outputIndex * outputInterval : now;
-    // A fresh run checkpoints at t = 0 too (after its first output), so that it can be resumed
-    // whenever it is stopped.
-    p.nextCheckpointS = checkpointInterval <= 0 ? 1e300 : m_options.resumed ? now + checkpointInterval : now;
+    startSeries(outputInterval, checkpointInterval);
 
     p.start = Clock::now();
     try {

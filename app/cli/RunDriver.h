@@ -44,6 +44,7 @@ public:
 
 private:
     struct Progress;
+    void startSeries(double outputInterval, double checkpointInterval);
     void writeOutput();
     void writeCheckpoint();
     void accountWork();

@@ -31,8 +31,8 @@ private slots:
 private:
     /// A copy of the run folder, to damage.
     std::string copyRun(const QString& name);
-    /// `lbdem resume DIR --quiet`: exit code (-1 on a hang or a signal), stderr in message.
-    int resume(const std::string& dir, QString& message);
+    /// `lbdem resume DIR --quiet [extra]`: exit code (-1 on a hang or a signal), stderr in message.
+    int resume(const std::string& dir, QString& message, const QStringList& extra = {});
     /// Resume must exit 2 with one line that names the checkpoint and matches pattern.
     void expectRefused(const std::string& dir, const char* pattern);
 
@@ -48,7 +48,8 @@ void CheckpointDamageTest::initTestCase() {
     process.start(LBDEM_EXECUTABLE, {"run", LBDEM_SOURCE_DIR "/sample_cases/default.toml", "--out",
                                      QString::fromStdString(m_run), "--quiet", "--until-tc", "0.1", "--set",
                                      "grains.count=150", "--set", "grains.packing=0.79", "--set",
-                                     "fluid.resolution=4", "--set", "run.end_tc=0.2", "--set", "output.vtk=false"});
+                                     "fluid.resolution=4", "--set", "run.end_tc=0.2", "--set", "run.output_interval_tc=0.05",
+                                     "--set", "output.vtk=false"});
     QVERIFY(process.waitForFinished(300000));
     QVERIFY2(process.exitCode() == 0, process.readAll().constData());
     QVERIFY(fs::exists(m_run + "/checkpoint.h5"));
@@ -61,13 +62,13 @@ std::string CheckpointDamageTest::copyRun(const QString& name) {
     return copy;
 }
 
-int CheckpointDamageTest::resume(const std::string& dir, QString& message) {
+int CheckpointDamageTest::resume(const std::string& dir, QString& message, const QStringList& extra) {
     QProcess process;
-    process.start(LBDEM_EXECUTABLE, {"resume", QString::fromStdString(dir), "--quiet"});
-    if (!process.waitForFinished(60000)) {
+    process.start(LBDEM_EXECUTABLE, QStringList{"resume", QString::fromStdString(dir), "--quiet"} + extra);
+    if (!process.waitForFinished(180000)) {
         process.kill();
         process.waitForFinished();
-        message = "no answer within 60 s";
+        message = "no answer within 180 s";
         return -1;
     }
     message = QString::fromLocal8Bit(process.readAllStandardError());
@@ -140,7 +141,7 @@ void CheckpointDamageTest::nonFiniteValue() {
 void CheckpointDamageTest::intactCheckpointResumes() {
     const std::string dir = copyRun("intact");
     QString message;
-    QCOMPARE(resume(dir, message), 0);
+    QCOMPARE(resume(dir, message, {"--until-tc", "0.11"}), 0); // a few steps: the checkpoint is sound
 }
 
 QTEST_GUILESS_MAIN(CheckpointDamageTest)
