@@ -31,6 +31,7 @@ constexpr MetricText kMetricText[kEnsembleMetrics] = {
     {"runout_at_3tc", "(L - L_i)/L_i at 3 tau_c"},
     {"froude_at_3tc", "Fr_d at 3 tau_c"},
     {"packing_final", "final packing"},
+    {"pore_pressure_at_1tc_pa", "pore pressure on the failure plane at 1 tau_c (Pa)"},
 };
 
 std::string number(double value, const char* pattern) {
@@ -72,7 +73,10 @@ EnsembleRun readRun(const SweepEntry& entry) {
     set(EnsembleMetric::PackingFinal, numberIn(summary, "packing_final"));
     const auto series = entry.dir / "timeseries.csv";
     set(EnsembleMetric::RunoutAt3Tc, valueAtTc(series, "runout_normalised", 3.0));
-    if (entry.spec.fluid.enabled) set(EnsembleMetric::FroudeAt3Tc, valueAtTc(series, "froude_densimetric", 3.0));
+    if (entry.spec.fluid.enabled) {
+        set(EnsembleMetric::FroudeAt3Tc, valueAtTc(series, "froude_densimetric", 3.0));
+        set(EnsembleMetric::PoreAt1Tc, valueAtTc(series, "pore_pressure_failure_plane_pa", 1.0));
+    }
     run.endReached = std::isfinite(endReachedTc(entry));
     return run;
 }
@@ -205,7 +209,7 @@ std::string ensembleMarkdown(const std::vector<EnsembleCase>& cases) {
         rule += "---|---|";
     }
     md += "\n" + rule + "\n";
-    const char* patterns[kEnsembleMetrics] = {"%.3f", "%.4f", "%.2f", "%.3f", "%.3f", "%.3f"};
+    const char* patterns[kEnsembleMetrics] = {"%.3f", "%.4f", "%.2f", "%.3f", "%.3f", "%.3f", "%.0f"};
     for (const auto& c : cases) {
         md += "| " + c.name + " | " + std::to_string(c.runs.size()) + " | " + std::to_string(c.finished) + " | " +
               std::to_string(c.unstable) + " |";

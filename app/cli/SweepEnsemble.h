@@ -37,6 +37,7 @@ enum class EnsembleMetric : std::size_t {
     RunoutAt3Tc,   ///< (L - L_i)/L_i at t = 3 tau_c
     FroudeAt3Tc,   ///< densimetric Froude number of the front at 3 tau_c (submerged cases)
     PackingFinal,  ///< packing fraction at the end
+    PoreAt1Tc,     ///< excess pore pressure on the failure plane at 1 tau_c [Pa] (submerged cases)
     Count
 };
 constexpr std::size_t kEnsembleMetrics = static_cast<std::size_t>(EnsembleMetric::Count);

@@ -130,18 +130,17 @@ void growsWithSlope(const CaseIndex& index, Kind kind, std::vector<Finding>& fin
     if (finding.seeds() > 0) findings.push_back(finding);
 }
 
-/// "loose submerged Fr_d at 3 tau_c above 0.4" at each slope, seed by seed.
-void froudeAboveHydroplaning(const CaseIndex& index, std::vector<Finding>& findings) {
-    // Hydroplaning of the front sets in above Fr of about 0.3-0.4 (Mohrig et al. 1998).
-    const double threshold = 0.4;
+/// A finding that one kind's metric lies above (or below) a threshold at each slope, seed by seed.
+void thresholdAtEachSlope(const CaseIndex& index, const std::string& statement, Kind kind, EnsembleMetric metric,
+                          double threshold, bool above, std::vector<Finding>& findings) {
     for (const double slope : index.slopes()) {
-        const auto* c = index.find("loose", slope, true);
+        const auto* c = index.find(kind.packing, slope, kind.submerged);
         if (!c) continue;
-        Finding finding{"loose, submerged: Fr_d at 3 tau_c above 0.4", slopeText(slope)};
+        Finding finding{statement, slopeText(slope)};
         for (const auto& run : c->runs) {
-            const double fr = valueOf(run, EnsembleMetric::FroudeAt3Tc);
-            if (run.status == "finished" && std::isfinite(fr))
-                tally(finding, fr > threshold ? Outcome::Holds : Outcome::Fails);
+            const double value = valueOf(run, metric);
+            if (run.status == "finished" && std::isfinite(value))
+                tally(finding, (above ? value > threshold : value < threshold) ? Outcome::Holds : Outcome::Fails);
         }
         if (finding.seeds() > 0) findings.push_back(finding);
     }
@@ -175,11 +174,18 @@ std::vector<Finding> computeFindings(const std::vector<EnsembleCase>& cases) {
         atEachSlope(index, name + ": submerged peak E_k/E_p0 later than dry", wet, dry,
                     exceeds(EnsembleMetric::TKePeak), findings);
     }
-    froudeAboveHydroplaning(index, findings);
+    // Hydroplaning of the front sets in above Fr of about 0.3-0.4 (Mohrig et al. 1998).
+    thresholdAtEachSlope(index, "loose, submerged: Fr_d at 3 tau_c above 0.4", looseWet, EnsembleMetric::FroudeAt3Tc,
+                         0.4, true, findings);
     atEachSlope(index, "submerged: loose Fr_d at 3 tau_c above dense", looseWet, denseWet,
                 exceeds(EnsembleMetric::FroudeAt3Tc), findings);
     atEachSlope(index, "submerged: loose front further than dense at 3 tau_c", looseWet, denseWet,
                 exceeds(EnsembleMetric::RunoutAt3Tc), findings);
+    // Dense columns dilate as they fail (suction), loose ones contract (excess pressure).
+    thresholdAtEachSlope(index, "dense, submerged: pore pressure on the failure plane negative at 1 tau_c", denseWet,
+                         EnsembleMetric::PoreAt1Tc, 0.0, false, findings);
+    thresholdAtEachSlope(index, "loose, submerged: pore pressure on the failure plane positive at 1 tau_c", looseWet,
+                         EnsembleMetric::PoreAt1Tc, 0.0, true, findings);
     for (const bool submerged : {false, true})
         atEachSlope(index,
                     std::string(submerged ? "submerged" : "dry") + ": dense and loose end within 0.01 in packing",

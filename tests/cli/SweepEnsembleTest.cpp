@@ -66,11 +66,16 @@ void writeRun(const cli::SweepEntry& e, const char* status) {
     fs::create_directories(e.dir);
     const double runout = finalRunout(e), initialWidth = 0.05;
     std::ofstream series(e.dir / "timeseries.csv");
-    series << "t_s,t_over_tc,step,ke_over_ep0,runout_m,runout_normalised,froude_densimetric\n";
+    // Pore pressure: dense -100 seed Pa (suction), loose +10 Pa but -5 Pa for seed 1 at 5 deg.
+    const bool dense = e.spec.grains.packing > 0.81;
+    const double pore = dense ? -100.0 * e.seed : (e.spec.domain.slope_deg > 0 && e.seed == 1 ? -5.0 : 10.0);
+    series << "t_s,t_over_tc,step,ke_over_ep0,runout_m,runout_normalised,froude_densimetric,"
+              "pore_pressure_failure_plane_pa\n";
     for (int k = 0; k <= 16; ++k) {
         const double t = 0.25 * k, grown = runout * (1 - std::exp(-t));
         series << 0.01 * t << "," << t << "," << 100 * k << "," << 0.1 * runout * t * std::exp(-t) << ","
-               << initialWidth * (1 + grown) << "," << grown << "," << 0.5 * runout * t * std::exp(-t) << "\n";
+               << initialWidth * (1 + grown) << "," << grown << "," << 0.5 * runout * t * std::exp(-t) << ","
+               << pore << "\n";
     }
     std::ofstream summary(e.dir / "summary.json");
     const bool finished = std::string(status) == "finished";
@@ -200,6 +205,8 @@ void SweepEnsembleTest::spreadPerCase() {
     QVERIFY2(csv.find("\ndense_0deg_dry,0.83,0.0,dry,3,3,0,0,2.2,0.1,2.1,2.3,") != std::string::npos, csv.c_str());
     QVERIFY2(csv.find("\ndense_0deg_submerged,0.83,0.0,submerged,3,2,1,0,1.5,0,1.5,1.5,") != std::string::npos,
              csv.c_str());
+    // Pore pressure at 1 tau_c of its two finished seeds, -100 and -200 Pa: sd 70.71 Pa.
+    QVERIFY2(csv.find(",-150,70.7107,-200,-100\n") != std::string::npos, csv.c_str());
 }
 
 void SweepEnsembleTest::findingsSeedBySeed() {
@@ -221,6 +228,15 @@ void SweepEnsembleTest::findingsSeedBySeed() {
     const auto* packing = findingOf(findings, "dry: dense and loose end within 0.01 in packing", "0 deg");
     QVERIFY(packing);
     QCOMPARE(packing->holds, 3); // 0.78 against 0.775
+    const auto* suction = findingOf(findings, "dense, submerged: pore pressure on the failure plane negative at 1 tau_c",
+                                    "0 deg");
+    const auto* excess = findingOf(findings, "loose, submerged: pore pressure on the failure plane positive at 1 tau_c",
+                                   "5 deg");
+    QVERIFY(suction && excess);
+    QCOMPARE(suction->holds, 2);
+    QCOMPARE(suction->seeds(), 2);
+    QCOMPARE(excess->holds, 2);
+    QCOMPARE(excess->fails, 1);
     const std::string csv = readText(m_out / "findings.csv");
     QVERIFY2(csv.find("\"dense: dry runout longer than submerged\",5 deg,1,1,1,3\n") != std::string::npos, csv.c_str());
 }
