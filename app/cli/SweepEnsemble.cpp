@@ -1,7 +1,9 @@
 // Ensemble runs of a sweep and the spread of each case's figures over its packing seeds.
 #include "app/cli/SweepEnsemble.h"
 
+#include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
+#include "solver/scene/Plan.h"
 #include "solver/io/TimeSeriesWriter.h"
 
 #include <nlohmann/json.hpp>
@@ -102,9 +104,16 @@ std::vector<int> firstSeeds(int count) {
 std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vector<int>& seeds,
                                     const std::filesystem::path& out) {
     std::vector<SweepRun> runs;
+    std::map<std::string, std::string> fileOfName;
     for (const auto& casePath : sweep.cases) {
+        auto spec = io::loadCase(casePath, sweep.overrides);
+        (void)solver::makePlan(spec); // the planner's refusals come before anything runs too
+        const auto [first, fresh] = fileOfName.emplace(spec.name, casePath);
+        if (!fresh)
+            throw solver::InputError(casePath + ": the case name '" + spec.name + "' is also that of " +
+                                     first->second + "; each case of a sweep needs its own name (it names "
+                                     "the output folder)");
         if (seeds.empty()) {
-            auto spec = io::loadCase(casePath, sweep.overrides);
             runs.push_back({{spec, out / spec.name, 0}, casePath, sweep.overrides});
             continue;
         }

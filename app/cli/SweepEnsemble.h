@@ -25,7 +25,8 @@ std::vector<int> firstSeeds(int count);
 
 /// Every run of the sweep, cases in order and each case's seeds in order: one run per case in
 /// OUT/NAME when `seeds` is empty, else one per seed in OUT/NAME_sK with grains.seed = K.
-/// Loads each case (throws InputError on bad input, before anything runs).
+/// Loads and plans each case, and refuses two cases of one name (one output folder): throws
+/// InputError before anything runs.
 std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vector<int>& seeds,
                                     const std::filesystem::path& out);
 

@@ -3,6 +3,7 @@
 #include "app/cli/SweepEnsemble.h"
 #include "app/cli/SweepFindings.h"
 #include "app/cli/SweepReport.h"
+#include "solver/core/InputError.h"
 
 #ifdef LBDEM_HAS_VIS
 #include "tests/render/ImageBaseline.h"
@@ -173,6 +174,9 @@ void SweepEnsembleTest::runsOfASweepWithSeeds() {
         QCOMPARE(runs[k].entry.spec.grains.count, 150);
         QCOMPARE(runs[k].overrides.back(), "grains.seed=" + std::to_string(k + 1));
     }
+    io::SweepSpec twice = sweep; // one case name twice: one output folder for two cases
+    twice.cases.push_back(sweep.cases.front());
+    QVERIFY_EXCEPTION_THROWN(cli::planSweepRuns(twice, cli::firstSeeds(2), "/tmp/S"), solver::InputError);
     const auto single = cli::planSweepRuns(sweep, {}, "/tmp/S");
     QCOMPARE(single.size(), std::size_t(1));
     QCOMPARE(single[0].entry.dir.string(), std::string("/tmp/S/loose_0deg_dry"));
