@@ -15,8 +15,10 @@ if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! comm
     ! command -v munged >/dev/null; then
     [[ $(id -u) == 0 ]] && command -v apt-get >/dev/null || skip "SLURM is not installed and this is not root with apt-get"
     echo "installing slurmctld slurmd slurm-client munge with apt-get"
-    DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends slurmctld slurmd slurm-client munge \
-        >/dev/null 2>&1 || skip "apt-get could not install slurmctld slurmd slurm-client munge"
+    install() { DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends slurmctld slurmd slurm-client munge; }
+    # A machine whose package lists are empty needs an update first.
+    install >/dev/null 2>&1 || { apt-get update -qq >/dev/null 2>&1 && install >/dev/null 2>&1; } ||
+        skip "apt-get could not install slurmctld slurmd slurm-client munge"
 fi
 [[ $(id -u) == 0 ]] || skip "the SLURM daemons of this test run as root; this is not root"
 
