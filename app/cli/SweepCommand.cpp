@@ -3,8 +3,10 @@
 #include "app/cli/Commands.h"
 #include "app/cli/JobRunner.h"
 #include "app/cli/RunFolder.h"
+#include "app/cli/SweepEnsemble.h"
 #include "app/cli/SweepProgress.h"
 #include "app/cli/SweepReport.h"
+#include "app/cli/SweepSlurm.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/SweepFile.h"
 #include "solver/core/InputError.h"
@@ -33,7 +35,24 @@ struct SweepOptions {
     int jobs = 1;
     double progressEveryS = 60;
     bool quiet = false;
+    int seeds = 0; ///< --seeds N: seeds 1..N instead of the sweep file's `seeds`
+    bool slurm = false, report = false;
+    SlurmOptions slurmOptions;
 };
+
+/// Writes the sweep's tables, figures and findings and says what it wrote.
+void report(const std::string& name, const std::vector<SweepEntry>& entries, const SweepOptions& options) {
+    const auto result = writeSweepReport(name, entries, options.out);
+    if (!options.quiet)
+        for (const auto& path : result.files) std::cout << "wrote " << path << "\n";
+    if (!result.note.empty() && !options.quiet) std::cerr << "note: no sweep figures: " << result.note << "\n";
+}
+
+/// The command that gathers the report of this sweep.
+std::string reportCommand(const SweepOptions& options) {
+    return "lbdem sweep " + options.file + " --out " + options.out + " --report" +
+           (options.seeds > 0 ? " --seeds " + std::to_string(options.seeds) : "");
+}
 
 bool finishedRun(const fs::path& dir) {
     std::ifstream file(dir / "summary.json");
@@ -45,53 +64,44 @@ bool finishedRun(const fs::path& dir) {
     }
 }
 
-/// Parse and plan every case of a sweep, so that bad input is reported before anything is created
-/// or run; two cases with one name (one output folder) are refused, naming both files.
-std::vector<SweepEntry> loadEntries(const io::SweepSpec& sweep, const fs::path& out) {
-    std::vector<SweepEntry> entries;
-    std::map<std::string, std::string> fileOfName;
-    for (const auto& casePath : sweep.cases) {
-        const auto spec = io::loadCase(casePath, sweep.overrides);
-        (void)solver::makePlan(spec); // the planner's refusals (an unstable DEM step) come now too
-        const auto [first, fresh] = fileOfName.emplace(spec.name, casePath);
-        if (!fresh)
-            throw solver::InputError(casePath + ": the case name '" + spec.name + "' is also that of " +
-                                     first->second + "; each case of a sweep needs its own name (it names "
-                                     "the output folder)");
-        entries.push_back({spec, out / spec.name});
-    }
-    return entries;
-}
-
 int runSweep(const SweepOptions& options) {
     const io::SweepSpec sweep = io::loadSweep(options.file);
     const fs::path out = options.out;
-    const std::vector<SweepEntry> entries = loadEntries(sweep, out);
+    // Each case once, or once per packing seed; bad input fails before any run.
+    const auto runs = planSweepRuns(sweep, options.seeds > 0 ? firstSeeds(options.seeds) : sweep.seeds, out);
+    std::vector<SweepEntry> entries;
+    for (const auto& run : runs) entries.push_back(run.entry);
+    if (options.slurm) return submitSlurmSweep(sweep.name, runs, out, options.slurmOptions, reportCommand(options));
+    if (options.report) {
+        report(sweep.name, entries, options);
+        return kExitOk;
+    }
     fs::create_directories(out);
     const std::string self = selfExecutable();
     std::vector<Job> jobs;
     std::vector<SweepEntry> toRun;
-    for (std::size_t k = 0; k < entries.size(); ++k) {
-        const auto& [spec, dir] = entries[k];
+    for (const auto& [entry, casePath, overrides] : runs) {
+        const auto& [spec, dir, seed] = entry;
+        const std::string label = dir.filename().string(); // the case, or the case and its seed
         if (finishedRun(dir)) {
-            if (!options.quiet) std::cout << "skip    " << spec.name << " (finished)\n";
+            if (!options.quiet) std::cout << "skip    " << label << " (finished)\n";
             continue;
         }
-        Job job{spec.name, {self}, (dir / "log.txt").string()};
+        Job job{label, {self}, (dir / "log.txt").string()};
         const bool resumable = fs::exists(dir / "checkpoint.h5");
         const bool stale = !resumable && holdsRun(dir); // a start that failed: nothing to continue
         fs::create_directories(dir);
         if (resumable) {
             job.argv.insert(job.argv.end(), {"resume", dir.string(), "--quiet"});
-            if (!options.quiet) std::cout << "resume  " << spec.name << "\n";
+            if (!options.quiet) std::cout << "resume  " << label << "\n";
         } else {
-            job.argv.insert(job.argv.end(), {"run", sweep.cases[k], "--out", dir.string(), "--quiet"});
+            job.argv.insert(job.argv.end(), {"run", casePath, "--out", dir.string(), "--quiet"});
             if (stale) job.argv.push_back("--force");
-            for (const auto& assignment : sweep.overrides) job.argv.insert(job.argv.end(), {"--set", assignment});
-            if (!options.quiet) std::cout << "run     " << spec.name << "\n";
+            for (const auto& assignment : overrides) job.argv.insert(job.argv.end(), {"--set", assignment});
+            if (!options.quiet) std::cout << "run     " << label << "\n";
         }
         jobs.push_back(std::move(job));
-        toRun.push_back(entries[k]);
+        toRun.push_back(entry);
     }
     std::cout.flush();
     shareCoresBetweenJobs(options.jobs);
@@ -114,10 +124,7 @@ int runSweep(const SweepOptions& options) {
             std::cout << "sweep: " << progress.line(running) << "\n" << std::flush;
         };
     runJobs(jobs, options.jobs, onFinished, onTick, options.progressEveryS);
-    const auto report = writeSweepReport(sweep.name, entries, out);
-    if (!options.quiet)
-        for (const auto& path : report.files) std::cout << "wrote " << path << "\n";
-    if (!report.note.empty() && !options.quiet) std::cerr << "note: no sweep figures: " << report.note << "\n";
+    report(sweep.name, entries, options);
     return failures == 0 ? kExitOk : kExitFailure;
 }
 
@@ -134,6 +141,24 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
                         "Seconds between progress lines (each running case's t/tau_c, ETA); 0: none")
         ->check(CLI::NonNegativeNumber);
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
+    command->add_option("--seeds", options->seeds,
+                        "Run each case once per packing seed 1..N (grains.seed), each into CASE_sK; "
+                        "replaces the sweep file's seeds")
+        ->check(CLI::Range(1, 1000));
+    auto* slurm = command->add_flag("--slurm", options->slurm,
+                                    "Write OUT/sweep.sbatch (a SLURM job array, one task per case and seed) "
+                                    "and submit it with sbatch when sbatch is on PATH; runs nothing here");
+    command->add_option("--partition", options->slurmOptions.partition, "SLURM partition of the tasks")->needs(slurm);
+    command->add_option("--time", options->slurmOptions.time, "SLURM time limit of each task, [D-]HH:MM:SS")
+        ->needs(slurm)
+        ->check(CLI::Validator([](std::string& text) { return validSlurmTime(text) ? "" : "expected [D-]HH:MM:SS, got " + text; }, "TIME"));
+    command->add_option("--cpus-per-task", options->slurmOptions.cpusPerTask, "Cores of each SLURM task")
+        ->needs(slurm)
+        ->check(CLI::Range(1, 1024));
+    command->add_flag("--report", options->report,
+                      "Run nothing: gather the runs that have finished in OUT into the tables, figures "
+                      "and findings")
+        ->excludes(slurm);
     command->callback([options, &exitCode] { exitCode = runSweep(*options); });
 }
 

@@ -1,6 +1,7 @@
 // Sweep figures from each case's timeseries.csv, drawn with the vis line charts.
 #include "app/cli/SweepFigures.h"
 
+#include "app/cli/SweepEnsemble.h"
 #include "solver/io/TimeSeriesWriter.h"
 
 #ifdef LBDEM_HAS_VIS
@@ -26,10 +27,12 @@ namespace {
 
 constexpr int kWidth = 900, kHeight = 600;
 
-/// One finished case with its time series.
+/// One finished case with its time series: one run, or the finished runs of an ensemble (one
+/// per packing seed) drawn as their mean and a band.
 struct CaseCurves {
-    const SweepFigureCase* run = nullptr;
-    io::TimeSeriesTable table;
+    const SweepFigureCase* run = nullptr; ///< the first run (what the runs share: packing, slope, medium)
+    std::vector<io::TimeSeriesTable> tables;
+    std::vector<double> runouts;          ///< each run's final runout
 };
 
 /// One number formatted with a printf pattern.
@@ -44,15 +47,43 @@ std::string slopeText(double slopeDeg) {
     return format("%g deg", slopeDeg);
 }
 
-/// The curve y(t/tau_c) of one column of a case, rows with a missing value left out.
+/// The curve y(t/tau_c) of one column of a case, rows with a missing value left out; for an
+/// ensemble the mean over its runs with the min-max band, at the first run's times that every
+/// run covers.
 vis::ChartSeries curve(const CaseCurves& c, const std::string& column, std::string name) {
     vis::ChartSeries series;
     series.name = std::move(name);
-    const auto t = c.table.column("t_over_tc"), y = c.table.column(column);
-    for (std::size_t k = 0; k < std::min(t.size(), y.size()); ++k)
-        if (std::isfinite(t[k]) && std::isfinite(y[k]))
-            series.x.push_back(t[k]), series.y.push_back(y[k]);
+    const auto t = c.tables.front().column("t_over_tc");
+    std::vector<std::vector<double>> times, values;
+    for (const auto& table : c.tables) times.push_back(table.column("t_over_tc")), values.push_back(table.column(column));
+    for (const double at : t) {
+        std::vector<double> ys;
+        for (std::size_t r = 0; r < c.tables.size(); ++r) ys.push_back(interpolate(times[r], values[r], at));
+        const Spread spread = spreadOf(ys);
+        if (!std::isfinite(at) || spread.count < static_cast<int>(ys.size()) || ys.empty()) continue;
+        series.x.push_back(at), series.y.push_back(spread.mean);
+        if (ys.size() > 1) series.low.push_back(spread.min), series.high.push_back(spread.max);
+    }
     return series;
+}
+
+/// The legend entry of the bands when some case has several runs, e.g. "shaded: min-max of 3
+/// seeds, line: mean"; empty otherwise.
+std::string bandLegend(const std::vector<CaseCurves>& cases) {
+    std::size_t fewest = 1000000, most = 0;
+    for (const auto& c : cases) fewest = std::min(fewest, c.tables.size()), most = std::max(most, c.tables.size());
+    if (most < 2) return "";
+    const std::string count = fewest == most ? std::to_string(most) : std::to_string(fewest) + "-" + std::to_string(most);
+    return "shaded: min-max of " + count + " seeds, line: mean";
+}
+
+/// Names the band of the first series that has one in the legend.
+void nameFirstBand(std::vector<vis::ChartSeries>& series, const std::string& legend) {
+    for (auto& s : series)
+        if (!s.low.empty()) {
+            s.bandName = legend;
+            return;
+        }
 }
 
 /// Figure labels of the packings present: "dense", "loose", or with the value when two
@@ -99,8 +130,8 @@ void draw(vis::ChartSpec spec, const std::filesystem::path& out, const std::stri
 /// Runout and E_k/E_p0 against t/tau_c for the cases of one packing.
 void drawPackingFigures(const std::string& sweepName, const std::string& packing,
                         const std::string& label, const std::vector<const CaseCurves*>& cases,
-                        const std::map<double, int>& colours, const std::filesystem::path& out,
-                        SweepFiguresResult& result) {
+                        const std::map<double, int>& colours, const std::string& band,
+                        const std::filesystem::path& out, SweepFiguresResult& result) {
     std::vector<vis::ChartSeries> runout, energy;
     for (const auto* c : cases) {
         const std::string name = std::string(c->run->submerged ? "submerged" : "dry") + ", " +
@@ -113,6 +144,8 @@ void drawPackingFigures(const std::string& sweepName, const std::string& packing
                 c->run->submerged ? vis::LineStyle::Dashed : vis::LineStyle::Solid;
         }
     }
+    nameFirstBand(runout, band);
+    nameFirstBand(energy, band);
     const std::string title = ", " + packingName(std::stod(packing)) + " packing (" + packing + ")";
     auto runoutSpec =
         vis::timeSeriesChart(sweepName + ": runout" + title, "(L - L_i) / L_i", runout);
@@ -122,16 +155,16 @@ void drawPackingFigures(const std::string& sweepName, const std::string& packing
          "energy_" + label + ".png", result);
 }
 
-/// Final runout against slope, one series per packing (densest first, colour) and medium (style).
+/// Final runout against slope, one series per packing (densest first, colour) and medium (style);
+/// an ensemble's mean with its min-max band.
 void drawRunoutVsSlope(const std::string& sweepName, const std::vector<CaseCurves>& cases,
-                       const std::map<std::string, std::string>& labels,
+                       const std::map<std::string, std::string>& labels, const std::string& band,
                        const std::filesystem::path& out, SweepFiguresResult& result) {
-    std::map<std::pair<std::string, bool>, std::map<double, double>>
-        points; // (packing, wet) -> slope -> runout
+    std::map<std::pair<std::string, bool>, std::map<double, Spread>>
+        points; // (packing, wet) -> slope -> runout over the runs
     for (const auto& c : cases)
-        if (std::isfinite(c.run->runout_final))
-            points[{format("%.2f", c.run->packing), c.run->submerged}][c.run->slope_deg] =
-                c.run->runout_final;
+        if (const Spread runout = spreadOf(c.runouts); runout.count > 0)
+            points[{format("%.2f", c.run->packing), c.run->submerged}][c.run->slope_deg] = runout;
     std::vector<vis::ChartSeries> series;
     int colour = 0;
     for (auto it = labels.rbegin(); it != labels.rend(); ++it, ++colour)
@@ -140,12 +173,18 @@ void drawRunoutVsSlope(const std::string& sweepName, const std::vector<CaseCurve
             if (found == points.end()) continue;
             vis::ChartSeries s;
             s.name = it->second + ", " + (submerged ? "submerged" : "dry");
+            bool spread = false;
             for (const auto& [slope, runout] : found->second)
-                s.x.push_back(slope), s.y.push_back(runout);
+                spread = spread || runout.count > 1;
+            for (const auto& [slope, runout] : found->second) {
+                s.x.push_back(slope), s.y.push_back(runout.mean);
+                if (spread) s.low.push_back(runout.min), s.high.push_back(runout.max);
+            }
             s.colour = colour;
             s.style = submerged ? vis::LineStyle::Dashed : vis::LineStyle::Solid;
             series.push_back(std::move(s));
         }
+    nameFirstBand(series, band);
     auto spec = vis::runoutVsSlopeChart(std::move(series), "final runout (L_f - L_i) / L_i");
     spec.title = sweepName + ": " + spec.title;
     spec.legendAtLeft = true;
@@ -155,8 +194,8 @@ void drawRunoutVsSlope(const std::string& sweepName, const std::vector<CaseCurve
 /// Densimetric Froude number of the submerged cases against t/tau_c, with Fr = 0.4.
 void drawFroude(const std::string& sweepName, const std::vector<CaseCurves>& cases,
                 const std::map<std::string, std::string>& labels,
-                const std::map<double, int>& colours, const std::filesystem::path& out,
-                SweepFiguresResult& result) {
+                const std::map<double, int>& colours, const std::string& band,
+                const std::filesystem::path& out, SweepFiguresResult& result) {
     const vis::LineStyle styles[] = {vis::LineStyle::Solid, vis::LineStyle::Dashed,
                                      vis::LineStyle::Dotted, vis::LineStyle::DashDotted};
     std::map<std::string, std::size_t> packingStyle; // densest solid, then dashed ...
@@ -171,6 +210,7 @@ void drawFroude(const std::string& sweepName, const std::vector<CaseCurves>& cas
         series.back().colour = colours.at(c.run->slope_deg);
         series.back().style = styles[packingStyle.at(key)];
     }
+    nameFirstBand(series, band);
     auto spec = vis::froudeChart(std::move(series));
     spec.title = sweepName + ": " + spec.title;
     draw(spec, out, "froude.png", result);
@@ -184,16 +224,21 @@ SweepFiguresResult writeSweepFigures(const std::string& sweepName,
                                      const std::filesystem::path& out) {
     SweepFiguresResult result;
 #ifdef LBDEM_HAS_VIS
-    std::vector<CaseCurves> curves;
+    std::vector<CaseCurves> curves; // the runs of one case (its packing seeds) together
     for (const auto& run : cases) {
+        const std::string folder = run.dir.filename().string(); // the case, or the case and its seed
         if (run.status != "finished") {
-            result.skipped.push_back(run.name + " (" + run.status + ")");
+            result.skipped.push_back(folder + " (" + run.status + ")");
             continue;
         }
         try {
-            curves.push_back({&run, io::readTimeSeries((run.dir / "timeseries.csv").string())});
+            auto table = io::readTimeSeries((run.dir / "timeseries.csv").string());
+            auto same = std::find_if(curves.begin(), curves.end(), [&](const CaseCurves& c) { return c.run->name == run.name; });
+            if (same == curves.end()) same = curves.insert(curves.end(), CaseCurves{&run, {}, {}});
+            same->tables.push_back(std::move(table));
+            same->runouts.push_back(run.runout_final);
         } catch (const std::exception&) {
-            result.skipped.push_back(run.name + " (no readable timeseries.csv)");
+            result.skipped.push_back(folder + " (no readable timeseries.csv)");
         }
     }
     if (curves.empty()) {
@@ -202,6 +247,7 @@ SweepFiguresResult writeSweepFigures(const std::string& sweepName,
     }
     const auto labels = packingLabels(curves);
     const auto colours = slopeColours(curves);
+    const std::string band = bandLegend(curves);
     // Sorted by slope, dry before submerged, so that legends read in order.
     std::sort(curves.begin(), curves.end(), [](const CaseCurves& a, const CaseCurves& b) {
         return std::tie(a.run->slope_deg, a.run->submerged) <
@@ -212,10 +258,10 @@ SweepFiguresResult writeSweepFigures(const std::string& sweepName,
             std::vector<const CaseCurves*> ofPacking;
             for (const auto& c : curves)
                 if (format("%.2f", c.run->packing) == it->first) ofPacking.push_back(&c);
-            drawPackingFigures(sweepName, it->first, it->second, ofPacking, colours, out, result);
+            drawPackingFigures(sweepName, it->first, it->second, ofPacking, colours, band, out, result);
         }
-        drawRunoutVsSlope(sweepName, curves, labels, out, result);
-        drawFroude(sweepName, curves, labels, colours, out, result);
+        drawRunoutVsSlope(sweepName, curves, labels, band, out, result);
+        drawFroude(sweepName, curves, labels, colours, band, out, result);
     } catch (const std::exception& error) {
         result.unavailable = std::string("drawing the figures failed: ") + error.what();
     }

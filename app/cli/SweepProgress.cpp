@@ -32,7 +32,7 @@ SweepProgress::SweepProgress(const std::vector<SweepEntry>& cases, int maxParall
     : m_maxParallel(std::max(1, maxParallel)), m_skipped(skipped) {
     for (const auto& entry : cases) {
         Case c;
-        c.name = entry.spec.name;
+        c.name = entry.dir.filename().string(); // the case, or the case and its seed
         c.dir = entry.dir;
         c.fluid = entry.spec.fluid.enabled;
         c.startTc = c.nowTc = runProgressTc(entry.dir);

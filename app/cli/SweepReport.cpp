@@ -2,6 +2,7 @@
 #include "app/cli/SweepReport.h"
 
 #include "app/cli/SweepFigures.h"
+#include "app/cli/SweepFindings.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/TimeSeriesWriter.h"
 
@@ -34,8 +35,8 @@ double numberOr(const nlohmann::json& json, const char* key) {
     return found != json.end() && found->is_number() ? found->get<double>() : 0.0;
 }
 
-/// t/tau_c at which the front first came within the largest grain diameter of the domain's end
-/// (from then on the runout is bounded by the domain, not by the flow); NaN when it never did.
+} // namespace
+
 double endReachedTc(const SweepEntry& entry) {
     const double limit = entry.spec.domain.width_m - entry.spec.grains.size_ratio * entry.spec.grains.d_min_m;
     try {
@@ -48,9 +49,11 @@ double endReachedTc(const SweepEntry& entry) {
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+namespace {
+
 Row readRow(const SweepEntry& entry) {
     Row row;
-    row.name = entry.spec.name;
+    row.name = entry.dir.filename().string(); // the case, or the case and seed of an ensemble run
     row.packing = number(entry.spec.grains.packing, "%.2f");
     row.slope = number(entry.spec.domain.slope_deg, "%.1f");
     row.medium = entry.spec.fluid.enabled ? "submerged" : "dry";
@@ -127,7 +130,8 @@ SweepReportResult writeSweepReport(const std::string& name, const std::vector<Sw
     for (const auto& entry : entries) rows.push_back(readRow(entry));
     std::string csv = "case,packing,slope_deg,medium,status,runout_final,end_reached_tc,ke_peak,"
                       "t_ke_peak_over_tc,packing_final,wall_s,mlups\n";
-    std::string md = "# Sweep " + name + "\n\n| case | packing | slope (deg) | medium | status | "
+    const SweepEnsembleReport ensemble = sweepEnsembleReport(entries, out);
+    std::string md = "# Sweep " + name + "\n\n" + ensemble.markdown + "| case | packing | slope (deg) | medium | status | "
                      "(L_f - L_i)/L_i | front at the domain's end (t/tau_c) | peak E_k/E_p0 | t_peak/tau_c | "
                      "final packing | wall (s) | MLUPS |\n"
                      "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -155,9 +159,11 @@ SweepReportResult writeSweepReport(const std::string& name, const std::vector<Sw
     const SweepFiguresResult figures = writeSweepFigures(name, figureCases, out);
     md += failuresSection(rows);
     md += figuresSection(figures, out);
-    io::writeFileAtomically((out / "sweep.csv").string(), csv);
+    const std::string runsCsv = ensemble.csv.empty() ? "sweep.csv" : "runs.csv";
+    io::writeFileAtomically((out / runsCsv).string(), csv);
     io::writeFileAtomically((out / "sweep.md").string(), md);
-    SweepReportResult result{{(out / "sweep.csv").string(), (out / "sweep.md").string()}, figures.unavailable};
+    SweepReportResult result{{(out / runsCsv).string(), (out / "sweep.md").string()}, figures.unavailable};
+    result.files.insert(result.files.end(), ensemble.files.begin(), ensemble.files.end());
     result.files.insert(result.files.end(), figures.files.begin(), figures.files.end());
     return result;
 }

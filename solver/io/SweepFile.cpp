@@ -6,6 +6,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace lbdem::io {
@@ -14,7 +15,7 @@ using solver::InputError;
 
 namespace {
 
-const std::vector<std::string> kSweepKeys{"sweep", "name", "cases", "set"};
+const std::vector<std::string> kSweepKeys{"sweep", "name", "cases", "set", "seeds"};
 
 std::vector<std::string> stringArray(const toml::node& node, const std::string& path,
                                      const std::string& key) {
@@ -28,6 +29,23 @@ std::vector<std::string> stringArray(const toml::node& node, const std::string& 
         values.push_back(*value);
     }
     return values;
+}
+
+/// The seeds array: positive integers, none twice.
+std::vector<int> seedArray(const toml::node& node, const std::string& path, const std::string& key) {
+    const auto* array = node.as_array();
+    const int line = static_cast<int>(node.source().begin.line);
+    const std::string expected = "expected an array of distinct positive integers, e.g. [1, 2, 3]";
+    if (!array || array->empty()) throw InputError(path, line, key, expected);
+    std::vector<int> seeds;
+    for (const auto& item : *array) {
+        const auto value = item.value<int64_t>();
+        if (!item.is_integer() || !value || *value < 1 || *value > 2147483647) throw InputError(path, line, key, expected);
+        if (std::find(seeds.begin(), seeds.end(), *value) != seeds.end())
+            throw InputError(path, line, key, "seed " + std::to_string(*value) + " is listed twice");
+        seeds.push_back(static_cast<int>(*value));
+    }
+    return seeds;
 }
 
 } // namespace
@@ -62,6 +80,8 @@ SweepSpec loadSweep(const std::string& path) {
             }
         } else if (name == "set") {
             sweep.overrides = stringArray(node, path, name);
+        } else if (name == "seeds") {
+            sweep.seeds = seedArray(node, path, name);
         } else {
             const std::string nearest = solver::nearestWord(name, kSweepKeys);
             throw InputError(path, line, name,

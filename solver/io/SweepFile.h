@@ -11,9 +11,11 @@ struct SweepSpec {
     std::string name;                   ///< sweep name (table and figure titles)
     std::vector<std::string> cases;     ///< case files, absolute or relative to the cwd
     std::vector<std::string> overrides; ///< "section.key=value" applied to every case
+    std::vector<int> seeds;             ///< packing seeds (grains.seed) of each case; empty: the case's own
 };
 
-/// Parse a sweep file (`sweep = 1`, `name`, `cases = [...]`, optional `set = [...]`);
+/// Parse a sweep file (`sweep = 1`, `name`, `cases = [...]`, optional `set = [...]` and
+/// `seeds = [1, 2, 3]`: each case run once per packing seed, no seed twice);
 /// throws InputError naming file, line and key.
 SweepSpec loadSweep(const std::string& path);
 

@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
+#include <vtkPlotArea.h>
 #include <vtkPlotPoints.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -83,6 +84,7 @@ void dataRange(const ChartSpec& spec, double range[4]) {
         for (std::size_t k = 0; k < s.x.size(); ++k) {
             range[0] = std::min(range[0], s.x[k]), range[1] = std::max(range[1], s.x[k]);
             range[2] = std::min(range[2], s.y[k]), range[3] = std::max(range[3], s.y[k]);
+            if (k < s.low.size()) range[2] = std::min(range[2], s.low[k]), range[3] = std::max(range[3], s.high[k]);
         }
     for (const auto& r : spec.references) {
         const int axis = r.horizontal ? 2 : 0;
@@ -90,10 +92,45 @@ void dataRange(const ChartSpec& spec, double range[4]) {
     }
 }
 
-/// Adds the series and reference lines of `spec` to `chart`.
+/// Adds the shaded band of series `s` to `chart` in palette colour `index`, translucent.
+void addBand(vtkChartXY* chart, const ChartSeries& s, std::size_t index) {
+    vtkNew<vtkDoubleArray> xs, lows, highs;
+    xs->SetName("x");
+    lows->SetName("low");
+    highs->SetName(s.bandName.empty() ? "high" : s.bandName.c_str());
+    // Straight between the points, sampled 8 times per interval: VTK leaves a band of two points
+    // (a sweep of two slopes) unpainted.
+    constexpr int kSamples = 8;
+    for (std::size_t k = 0; k < s.x.size(); ++k)
+        for (int j = 0; j < (k + 1 < s.x.size() ? kSamples : 1); ++j) {
+            const std::size_t next = std::min(k + 1, s.x.size() - 1);
+            const double f = static_cast<double>(j) / kSamples;
+            xs->InsertNextValue(s.x[k] + f * (s.x[next] - s.x[k]));
+            lows->InsertNextValue(s.low[k] + f * (s.low[next] - s.low[k]));
+            highs->InsertNextValue(s.high[k] + f * (s.high[next] - s.high[k]));
+        }
+    vtkNew<vtkTable> table;
+    table->AddColumn(xs);
+    table->AddColumn(lows);
+    table->AddColumn(highs);
+    auto* area = vtkPlotArea::SafeDownCast(chart->AddPlot(vtkChart::AREA));
+    area->SetInputData(table);
+    area->SetInputArray(0, "x");
+    area->SetInputArray(1, "low");
+    area->SetInputArray(2, highs->GetName());
+    area->SetLabel(s.bandName);
+    const auto* rgb = kPalette[index % (sizeof kPalette / sizeof kPalette[0])];
+    area->SetColor(rgb[0], rgb[1], rgb[2], 60);
+    area->SetLegendVisibility(!s.bandName.empty());
+}
+
+/// Adds the series (bands first, behind every line) and reference lines of `spec` to `chart`.
 void addPlots(const ChartSpec& spec, vtkChartXY* chart) {
     double range[4];
     dataRange(spec, range);
+    for (std::size_t k = 0; k < spec.series.size(); ++k)
+        if (!spec.series[k].low.empty())
+            addBand(chart, spec.series[k], spec.series[k].colour >= 0 ? static_cast<std::size_t>(spec.series[k].colour) : k);
     for (std::size_t k = 0; k < spec.series.size(); ++k) {
         const auto& s = spec.series[k];
         const std::size_t colour = s.colour >= 0 ? static_cast<std::size_t>(s.colour) : k;
@@ -192,6 +229,9 @@ void renderLineChart(const ChartSpec& spec, const std::string& path, int width, 
         if (!s.labels.empty() && s.labels.size() != s.x.size())
             throw std::invalid_argument("chart series '" + s.name + "' has " + std::to_string(s.labels.size()) +
                                         " labels for " + std::to_string(s.x.size()) + " points");
+        if ((!s.low.empty() || !s.high.empty()) && (s.low.size() != s.x.size() || s.high.size() != s.x.size()))
+            throw std::invalid_argument("chart series '" + s.name + "' has a band that does not match its " +
+                                        std::to_string(s.x.size()) + " points");
         for (std::size_t k = 0; k < s.x.size(); ++k)
             if ((spec.logX && !(s.x[k] > 0)) || (spec.logY && !(s.y[k] > 0)))
                 throw std::invalid_argument("chart series '" + s.name + "' has a value that is not positive on a "

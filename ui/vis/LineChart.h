@@ -17,6 +17,8 @@ struct ChartSeries {
     int colour = -1;      ///< palette index (Tableau 10); -1: the series' position in the chart
     LineStyle style = LineStyle::Solid;
     std::vector<std::string> labels{}; ///< text beside each point (empty: none), e.g. a setting
+    std::vector<double> low{}, high{}; ///< a shaded band from low to high at each x (empty: none)
+    std::string bandName{};            ///< the band's legend entry (empty: the band is not listed)
 };
 
 /// A dashed reference line across the plot: horizontal at y = value, or vertical at x = value.
@@ -38,8 +40,9 @@ struct ChartSpec {
 };
 
 /// Renders `spec` off-screen at `width` x `height` pixels into the PNG file `path`; needs an
-/// X display (see ensureDisplay). Throws std::invalid_argument for a series whose x and y
-/// lengths differ (or whose labels, when given, do not match them), a value that is not
+/// X display (see ensureDisplay); bands are drawn first, translucent, in their series' colour.
+/// Throws std::invalid_argument for a series whose x and y lengths differ (or whose labels or
+/// band, when given, do not match them), a value that is not
 /// positive on a logarithmic axis, or a spec with no points at all.
 void renderLineChart(const ChartSpec& spec, const std::string& path, int width, int height);
 

@@ -1,0 +1,284 @@
+// Ensembles over packing seeds on a synthetic sweep folder: spread per case, findings seed by seed
+// (with fronts at the domain's end left undecided), the report's files and the banded figures.
+#include "app/cli/SweepEnsemble.h"
+#include "app/cli/SweepFindings.h"
+#include "app/cli/SweepReport.h"
+#include "solver/core/InputError.h"
+
+#ifdef LBDEM_HAS_VIS
+#include "tests/render/ImageBaseline.h"
+
+#include <vtkImageData.h>
+#endif
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+using namespace lbdem;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readText(const fs::path& path) {
+    std::ifstream file(path);
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+/// One run of the synthetic ensemble: packing, slope, medium and seed.
+cli::SweepEntry entry(const fs::path& out, double packing, double slope, bool submerged, int seed) {
+    cli::SweepEntry e;
+    char name[64];
+    std::snprintf(name, sizeof name, "%s_%gdeg_%s", packing > 0.81 ? "dense" : "loose", slope,
+                  submerged ? "submerged" : "dry");
+    e.spec.name = name;
+    e.spec.grains.packing = packing;
+    e.spec.domain.slope_deg = slope;
+    e.spec.fluid.enabled = submerged;
+    e.seed = seed;
+    e.dir = out / (std::string(name) + "_s" + std::to_string(seed));
+    return e;
+}
+
+/// The final runout of a synthetic run. Dense dry 2.0 + 0.1 slope + 0.1 seed; dense submerged
+/// 1.5 at 0 deg, and at 5 deg 1.9 (seed 1, shorter than dry), 1.95 (seed 2: its front reaches the
+/// domain's end, see initTestCase) and 3.0 (seed 3, longer than dry); loose dry 1.8 + 0.1 slope,
+/// loose submerged 1.6 + 0.1 slope.
+double finalRunout(const cli::SweepEntry& e) {
+    const double slope = e.spec.domain.slope_deg;
+    if (e.spec.grains.packing > 0.81) {
+        if (!e.spec.fluid.enabled) return 2.0 + 0.1 * slope + 0.1 * e.seed;
+        return slope == 0 ? 1.5 : (e.seed == 1 ? 1.9 : e.seed == 2 ? 1.95 : 3.0);
+    }
+    return (e.spec.fluid.enabled ? 1.6 : 1.8) + 0.1 * slope;
+}
+
+/// timeseries.csv (t/tau_c 0..4, the runout approaching its final value) and summary.json.
+void writeRun(const cli::SweepEntry& e, const char* status) {
+    fs::create_directories(e.dir);
+    const double runout = finalRunout(e), initialWidth = 0.05;
+    std::ofstream series(e.dir / "timeseries.csv");
+    // Pore pressure: dense -100 seed Pa (suction), loose +10 Pa but -5 Pa for seed 1 at 5 deg.
+    const bool dense = e.spec.grains.packing > 0.81;
+    const double pore = dense ? -100.0 * e.seed : (e.spec.domain.slope_deg > 0 && e.seed == 1 ? -5.0 : 10.0);
+    series << "t_s,t_over_tc,step,ke_over_ep0,runout_m,runout_normalised,froude_densimetric,"
+              "pore_pressure_failure_plane_pa\n";
+    for (int k = 0; k <= 16; ++k) {
+        const double t = 0.25 * k, grown = runout * (1 - std::exp(-t));
+        series << 0.01 * t << "," << t << "," << 100 * k << "," << 0.1 * runout * t * std::exp(-t) << ","
+               << initialWidth * (1 + grown) << "," << grown << "," << 0.5 * runout * t * std::exp(-t) << ","
+               << pore << "\n";
+    }
+    std::ofstream summary(e.dir / "summary.json");
+    const bool finished = std::string(status) == "finished";
+    summary << "{\"finished\": " << (finished ? "true" : "false") << ", \"runout_final\": " << runout
+            << ", \"ke_peak\": " << 0.1 * runout / std::exp(1.0) << ", \"t_ke_peak_over_tc\": 1.0, "
+            << "\"packing_final\": " << (e.spec.grains.packing > 0.81 ? 0.78 : 0.775)
+            << (std::string(status) == "unstable" ? ", \"stop_reason\": \"diverged\"" : "") << "}\n";
+}
+
+#ifdef LBDEM_HAS_VIS
+/// Pixels within tolerance per channel of the colour (r, g, b).
+int pixelsNear(vtkImageData* image, int r, int g, int b, int tolerance) {
+    int dims[3];
+    image->GetDimensions(dims);
+    int count = 0;
+    for (int y = 0; y < dims[1]; ++y)
+        for (int x = 0; x < dims[0]; ++x) {
+            const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+            count += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
+        }
+    return count;
+}
+#endif
+
+const cli::Finding* findingOf(const std::vector<cli::Finding>& findings, const std::string& statement,
+                              const std::string& where) {
+    for (const auto& f : findings)
+        if (f.statement == statement && f.where == where) return &f;
+    return nullptr;
+}
+
+} // namespace
+
+class SweepEnsembleTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void spreadAndInterpolation();
+    void runsOfASweepWithSeeds();
+    void spreadPerCase();
+    void findingsSeedBySeed();
+    void reportFiles();
+    void figuresHaveBands();
+
+private:
+    QTemporaryDir m_dir;
+    fs::path m_out;
+    std::vector<cli::SweepEntry> m_entries;
+    cli::SweepReportResult m_result;
+};
+
+void SweepEnsembleTest::initTestCase() {
+    QVERIFY(m_dir.isValid());
+    m_out = m_dir.path().toStdString();
+    for (const double packing : {0.83, 0.79})
+        for (const double slope : {0.0, 5.0})
+            for (const bool submerged : {false, true})
+                for (const int seed : {1, 2, 3}) {
+                    m_entries.push_back(entry(m_out, packing, slope, submerged, seed));
+                    auto& e = m_entries.back();
+                    // dense 5 deg submerged, seed 2: a 0.12 m domain, whose end (less one largest
+                    // diameter, 0.1178 m) its front passes (0.05 (1 + 1.95 (1 - e^-4)) = 0.146 m).
+                    if (packing > 0.81 && slope > 0 && submerged && seed == 2) e.spec.domain.width_m = 0.12;
+                    const bool unstable = packing > 0.81 && slope == 0 && submerged && seed == 3;
+                    writeRun(e, unstable ? "unstable" : "finished");
+                }
+    m_result = cli::writeSweepReport("ensemble", m_entries, m_out);
+}
+
+void SweepEnsembleTest::spreadAndInterpolation() {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const auto s = cli::spreadOf({1.0, nan, 2.0, 3.0});
+    QCOMPARE(s.count, 3);
+    QCOMPARE(s.mean, 2.0);
+    QCOMPARE(s.sd, 1.0); // sample standard deviation: sqrt((1 + 0 + 1) / 2)
+    QCOMPARE(s.min, 1.0);
+    QCOMPARE(s.max, 3.0);
+    QVERIFY(std::isnan(cli::spreadOf({4.0}).sd));
+    QCOMPARE(cli::spreadOf({}).count, 0);
+    QCOMPARE(cli::interpolate({0, 1, 2}, {0, 10, 30}, 1.5), 20.0);
+    QCOMPARE(cli::interpolate({0, 1, 2}, {0, 10, 30}, 2.0), 30.0);
+    QVERIFY(std::isnan(cli::interpolate({0, 1, 2}, {0, 10, 30}, 2.5)));
+}
+
+void SweepEnsembleTest::runsOfASweepWithSeeds() {
+    io::SweepSpec sweep;
+    sweep.cases = {LBDEM_SOURCE_DIR "/sample_cases/paper/loose_0deg_dry.toml"};
+    sweep.overrides = {"grains.count=150"};
+    const auto runs = cli::planSweepRuns(sweep, cli::firstSeeds(3), "/tmp/S");
+    QCOMPARE(runs.size(), std::size_t(3));
+    for (int k = 0; k < 3; ++k) {
+        QCOMPARE(runs[k].entry.dir.string(), "/tmp/S/loose_0deg_dry_s" + std::to_string(k + 1));
+        QCOMPARE(runs[k].entry.seed, k + 1);
+        QCOMPARE(runs[k].entry.spec.grains.seed, k + 1);
+        QCOMPARE(runs[k].entry.spec.grains.count, 150);
+        QCOMPARE(runs[k].overrides.back(), "grains.seed=" + std::to_string(k + 1));
+    }
+    io::SweepSpec twice = sweep; // one case name twice: one output folder for two cases
+    twice.cases.push_back(sweep.cases.front());
+    QVERIFY_EXCEPTION_THROWN(cli::planSweepRuns(twice, cli::firstSeeds(2), "/tmp/S"), solver::InputError);
+    const auto single = cli::planSweepRuns(sweep, {}, "/tmp/S");
+    QCOMPARE(single.size(), std::size_t(1));
+    QCOMPARE(single[0].entry.dir.string(), std::string("/tmp/S/loose_0deg_dry"));
+    QCOMPARE(single[0].entry.seed, 0);
+}
+
+void SweepEnsembleTest::spreadPerCase() {
+    const auto cases = cli::gatherEnsemble(m_entries);
+    QCOMPARE(cases.size(), std::size_t(8));
+    const auto& denseDry0 = cases[0];
+    QCOMPARE(denseDry0.name, std::string("dense_0deg_dry"));
+    QCOMPARE(denseDry0.finished, 3);
+    const auto& runout = denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::RunoutFinal)];
+    QVERIFY(std::abs(runout.mean - 2.2) < 1e-12 && std::abs(runout.sd - 0.1) < 1e-12);
+    QVERIFY(std::abs(runout.min - 2.1) < 1e-12 && std::abs(runout.max - 2.3) < 1e-12);
+    // At 3 tau_c the synthetic runout is R (1 - e^-3), between the rows at 3.0 (exactly a row).
+    const auto& at3 = denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::RunoutAt3Tc)];
+    QVERIFY(std::abs(at3.mean - 2.2 * (1 - std::exp(-3.0))) < 1e-5);
+    QCOMPARE(denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::FroudeAt3Tc)].count, 0); // dry
+    const auto& denseWet0 = cases[1];
+    QCOMPARE(denseWet0.finished, 2);
+    QCOMPARE(denseWet0.unstable, 1);
+    QCOMPARE(cases[3].name, std::string("dense_5deg_submerged"));
+    QCOMPARE(cases[3].endReached, 1);
+    const std::string csv = readText(m_out / "sweep.csv");
+    QVERIFY2(csv.rfind("case,packing,slope_deg,medium,seeds,finished,unstable,front_at_end,runout_final_mean,"
+                       "runout_final_sd,runout_final_min,runout_final_max,ke_peak_mean,",
+                       0) == 0,
+             csv.c_str());
+    QVERIFY2(csv.find("\ndense_0deg_dry,0.83,0.0,dry,3,3,0,0,2.2,0.1,2.1,2.3,") != std::string::npos, csv.c_str());
+    QVERIFY2(csv.find("\ndense_0deg_submerged,0.83,0.0,submerged,3,2,1,0,1.5,0,1.5,1.5,") != std::string::npos,
+             csv.c_str());
+    // Pore pressure at 1 tau_c of its two finished seeds, -100 and -200 Pa: sd 70.71 Pa.
+    QVERIFY2(csv.find(",-150,70.7107,-200,-100\n") != std::string::npos, csv.c_str());
+}
+
+void SweepEnsembleTest::findingsSeedBySeed() {
+    const auto findings = cli::computeFindings(cli::gatherEnsemble(m_entries));
+    const auto* dense0 = findingOf(findings, "dense: dry runout longer than submerged", "0 deg");
+    const auto* dense5 = findingOf(findings, "dense: dry runout longer than submerged", "5 deg");
+    QVERIFY(dense0 && dense5);
+    QCOMPARE(dense0->holds, 2); // seed 3 of the submerged case was unstable: left out
+    QCOMPARE(dense0->seeds(), 2);
+    QCOMPARE(dense5->holds, 1);     // seed 1: 2.6 against 1.9
+    QCOMPARE(dense5->undecided, 1); // seed 2: 2.7 against a front at the end (>= 1.95)
+    QCOMPARE(dense5->fails, 1);     // seed 3: 2.8 against 3.0
+    const auto* loose = findingOf(findings, "loose: submerged runout longer than dry", "5 deg");
+    QVERIFY(loose);
+    QCOMPARE(loose->fails, 3);
+    const auto* grows = findingOf(findings, "dense, dry: runout grows with slope", "0 deg to 5 deg");
+    QVERIFY(grows);
+    QCOMPARE(grows->holds, 3);
+    const auto* packing = findingOf(findings, "dry: dense and loose end within 0.01 in packing", "0 deg");
+    QVERIFY(packing);
+    QCOMPARE(packing->holds, 3); // 0.78 against 0.775
+    const auto* suction = findingOf(findings, "dense, submerged: pore pressure on the failure plane negative at 1 tau_c",
+                                    "0 deg");
+    const auto* excess = findingOf(findings, "loose, submerged: pore pressure on the failure plane positive at 1 tau_c",
+                                   "5 deg");
+    QVERIFY(suction && excess);
+    QCOMPARE(suction->holds, 2);
+    QCOMPARE(suction->seeds(), 2);
+    QCOMPARE(excess->holds, 2);
+    QCOMPARE(excess->fails, 1);
+    const std::string csv = readText(m_out / "findings.csv");
+    QVERIFY2(csv.find("\"dense: dry runout longer than submerged\",5 deg,1,1,1,3\n") != std::string::npos, csv.c_str());
+}
+
+void SweepEnsembleTest::reportFiles() {
+    const std::string md = readText(m_out / "sweep.md");
+    QVERIFY2(md.find("## Ensemble over packing seeds") != std::string::npos, md.c_str());
+    QVERIFY2(md.find("| dense_0deg_dry | 3 | 3 | 0 | 2.200 ± 0.100 | 2.100–2.300 |") != std::string::npos, md.c_str());
+    QVERIFY2(md.find("| dense_5deg_submerged | 3 | 3 | 0 | 2.283 ± 0.621 (end: 1) | 1.900–3.000 |") !=
+                 std::string::npos,
+             md.c_str());
+    QVERIFY2(md.find("| dense: dry runout longer than submerged | 5 deg | holds for 1 of 3 seeds (1 undecided: a "
+                     "front at the domain's end) |") != std::string::npos,
+             md.c_str());
+    QVERIFY2(md.find("## Runs") != std::string::npos && md.find("| dense_5deg_submerged_s2 |") != std::string::npos,
+             md.c_str());
+    const std::string runs = readText(m_out / "runs.csv");
+    QCOMPARE(std::count(runs.begin(), runs.end(), '\n'), 25L); // header + 24 runs
+    QVERIFY2(runs.find("\ndense_0deg_submerged_s3,0.83,0.0,submerged,unfinished,") != std::string::npos, runs.c_str());
+}
+
+void SweepEnsembleTest::figuresHaveBands() {
+#ifdef LBDEM_HAS_VIS
+    QVERIFY2(m_result.note.empty(), m_result.note.c_str());
+    const auto image = support::readPng((m_out / "runout_dense.png").string());
+    QVERIFY(image);
+    // The band of the 5 deg submerged case (1.9 to 3.0 at the end), where no other band lies:
+    // Tableau orange (255, 127, 14) at alpha 60/255 over white.
+    const int band = pixelsNear(image, 255, 225, 198, 10);
+    QVERIFY2(band > 3000, std::to_string(band).c_str());
+    const auto slope = support::readPng((m_out / "runout_vs_slope.png").string());
+    QVERIFY(slope);
+    // The dense bands: Tableau blue (31, 119, 180) at alpha 60/255 over white.
+    QVERIFY2(pixelsNear(slope, 202, 223, 237, 10) > 3000, "no band in runout_vs_slope.png");
+#else
+    QVERIFY(m_result.note.find("no VTK") != std::string::npos);
+#endif
+}
+
+QTEST_GUILESS_MAIN(SweepEnsembleTest)
+#include "SweepEnsembleTest.moc"
