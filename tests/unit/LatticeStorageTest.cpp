@@ -1,4 +1,4 @@
-// Float population storage (f_i - w_i as float, double arithmetic) against double storage.
+// Float population storage (f_i - w_i as float, collided in float by the bulk kernel) against double storage.
 #include "solver/core/InputError.h"
 #include "solver/lattice/Lattice.h"
 #include "solver/lattice/StabilityGuard.h"
