@@ -53,8 +53,9 @@ struct ObstacleLoad {
 /// where they came from. Both move 144 bytes per update (72 with float storage) with no
 /// write-allocate traffic, in half the memory of a two-lattice scheme. Where a population sits
 /// therefore depends on the parity of the step count: postSlot() and inSlot() say where, and
-/// population() / setPopulation() are the only way in from outside, since a float slot holds
-/// f_i - w_i (PopulationStorage). Boundary passes write the populations that solid neighbours
+/// population() / setPopulation() are the way in from outside, since a float slot holds
+/// f_i - w_i (PopulationStorage); only hot loops (the grain links) address the stored values
+/// directly, through storedDoubles() / storedFloats() and postSlotOffset(). Boundary passes write the populations that solid neighbours
 /// send into the fluid before the bulk kernel, so the kernel itself has no branches.
 class Lattice {
 public:
