@@ -1,4 +1,5 @@
 // `lbdem bench`: memory bandwidth and lattice-kernel throughput as a fraction of the roofline.
+#include "app/cli/CaseBench.h"
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
 #include "solver/core/InputError.h"
@@ -193,7 +194,21 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::Range(0, 1024));
     command->add_option("--size", options->size, "Lattice size NXxNY (default 2000x1000)");
     command->add_flag("--dem", options->dem, "Benchmark the DEM instead of the lattice");
-    command->callback([options, &exitCode] {
+    auto caseOptions = std::make_shared<CaseBenchOptions>();
+    command->add_option("--case", caseOptions->path,
+                        "Run this case for --tc and print per stage the time per step and its share, "
+                        "effective MLUPS, the bandwidth roofline and the projected time to the case's end; "
+                        "--json: {bandwidth_gbs, roofline_mlups, effective_mlups, stages: {name: s per "
+                        "step}, projected_end_s, threads, storage, ...}");
+    command->add_option("--tc", caseOptions->tc, "Span of the --case run in tau_c (default 0.5)");
+    command->add_option("--set", caseOptions->overrides, "With --case: override a case key, key=value (repeatable)");
+    command->callback([options, caseOptions, &exitCode] {
+        if (!caseOptions->path.empty()) {
+            caseOptions->json = options->json;
+            caseOptions->threads = options->threads;
+            exitCode = runCaseBench(*caseOptions);
+            return;
+        }
         exitCode = options->dem ? runDemBench(*options) : runFluidBench(*options);
     });
 }

@@ -69,7 +69,9 @@ int Coupling::topGrainRow() const {
         grainGeometry(p, cx, cy, r);
         top = std::max(top, cy + r + 2);
     }
-    return top < 0 ? m_lattice.ny() - 1 : std::min(m_lattice.ny() - 1, static_cast<int>(top));
+    // Compared as Real: a grain far above the lattice (a hostile checkpoint) converts no huge value.
+    const Real last = m_lattice.ny() - 1;
+    return static_cast<int>(top < 0 || !(top < last) ? last : top);
 }
 
 void Coupling::collectForces() {

@@ -6,6 +6,7 @@
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -118,16 +119,25 @@ private:
     /// Nodes a grain's scan visits, in unwrapped lattice indices (inclusive).
     struct Box { int i0 = 0, i1 = -1, j0 = 0, j1 = -1; };
     struct PsmEntry { long long cell; std::int32_t grain; Real eps, rx, ry; };
+    /// A covered node within 1.5 of its grain's surface: reset to the surface motion, source of
+    /// the moving-wall links. (i, j) wrapped into the lattice, (sx, sy) from the grain's centre.
+    struct SurfaceNode { long long cell; int i, j; std::int32_t grain; Real sx, sy; };
+    /// What the links of one grain need: radius and surface motion, lattice units.
+    struct GrainMotion { Real r, vx, vy, w; };
 
     long long wrapCell(int iu, int ju) const;
     /// Wrap (i, j) into the lattice across periodic sides; false when it lies outside.
     bool wrapNode(int& i, int& j) const;
-    /// Moving-wall links of the surface node (iu, ju) at offset (sx, sy) from the centre of a
-    /// grain of radius r moving with (vx, vy, w); adds their momentum to the loads, returns their count.
-    int linkSurfaceNode(int iu, int ju, Real sx, Real sy, Real r, const long long solidSlots[lattice::kQ],
-                        Real vx, Real vy, Real w, Real& loadX, Real& loadY, Real& loadT);
+    /// Node access of the links of surface nodes near the lattice's edges (wrapping, flags and
+    /// owners through the lattice and this coupling); defined with the links.
+    struct EdgeAccess;
+    /// Centre and hydrodynamic radius of grain p in lattice units; across a periodic side the
+    /// centre is brought within one period of the lattice (a no-op for grains inside it).
     void grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) const;
     void surfaceVelocity(std::size_t p, Real rx, Real ry, Real& ux, Real& uy) const;
+    /// Nodes within r + margin of the centre (cx, cy) along each axis, clipped to the lattice (to
+    /// one period along periodic sides): no loop over a box depends on an unclipped grain position.
+    Box clippedBox(Real cx, Real cy, Real r, Real margin) const;
     Box grainBox(std::size_t p) const;
     /// The row the bulk kernel should sweep last: just above the highest grain (cache reuse).
     int topGrainRow() const;
@@ -135,10 +145,19 @@ private:
     void mapBounceBack();
     void findChanges();
     void findGrainChanges(std::size_t p, std::vector<Change>& out) const;
+    /// Owner changes of the nodes iu in [i0, i1] of row (ju, wrapped row j) for grain p.
+    void scanRow(std::int32_t p, int ju, int j, Real dy, int i0, int i1, Real cx, Real r,
+                 std::vector<Change>& out) const;
     void applyChanges();
     void refillUncovered();
-    /// Solid nodes and moving-wall links of grain p; returns its link count.
-    std::size_t bounceBackGrain(std::size_t p);
+    /// The surface nodes of every grain, sorted row by row.
+    void findSurfaceNodes();
+    void findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) const;
+    /// Reset every surface node and apply its links, visiting the nodes row by row (memory
+    /// order); loads are summed per grain afterwards in grain order. Returns the link count.
+    std::size_t linkSurfaceNodes();
+    template <class S>
+    std::size_t linkSurfaceNodesStored(S* stored);
     void mapPsm();
     void collidePsm();
 
@@ -154,6 +173,12 @@ private:
     std::vector<Box> m_box;             // bounce-back, per grain: the box its nodes lie in
     std::vector<std::vector<Change>> m_threadChanges; // per thread, grains in order
     std::vector<Change> m_uncovered;    // nodes left by their grain this step
+    std::vector<std::vector<SurfaceNode>> m_threadSurface; // per thread, grains in order
+    std::vector<SurfaceNode> m_surface; // surface nodes of all grains, row by row (grain order within)
+    std::vector<std::int32_t> m_rowStart; // counting sort of m_surface by row
+    std::vector<int> m_prefetchSpan;    // per row: first and last column its links' rows may touch
+    std::vector<Real> m_surfaceLoad;    // per surface node: (fx, fy, torque) of its links
+    std::vector<GrainMotion> m_motion;  // per grain, this step
     std::size_t m_linkCount = 0;        // bounce-back links of the last mapGrains
     std::vector<long long> m_linkStart; // PSM: first entry of each touched cell (prefix sums)
     std::vector<Real> m_linkLoad;       // per PSM entry: momentum and torque exchanged
@@ -187,6 +212,10 @@ inline void Coupling::grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) 
     cx = (g.x[p] - m_params.origin_x) / m_params.h;
     cy = (g.y[p] - m_params.origin_y) / m_params.h;
     r = m_params.hydro_radius_ratio * g.radius[p] / m_params.h;
+    // A centre more than a period outside (a hostile checkpoint) moves by whole periods.
+    const Real nx = m_lattice.nx(), ny = m_lattice.ny();
+    if (m_periodicX && !(cx >= -nx && cx <= 2 * nx)) cx -= nx * std::floor(cx / nx);
+    if (m_periodicY && !(cy >= -ny && cy <= 2 * ny)) cy -= ny * std::floor(cy / ny);
 }
 
 inline void Coupling::surfaceVelocity(std::size_t p, Real rx, Real ry, Real& ux, Real& uy) const {

@@ -1,4 +1,4 @@
-// Closed-form disc-rectangle overlap and the link-circle intersection used by both coupling methods.
+// Closed-form disc-rectangle overlap (the partially saturated cells' solid fractions).
 #include "solver/coupling/DiscGeometry.h"
 
 #include <algorithm>
@@ -53,15 +53,6 @@ Real discRectangleOverlap(Real cx, Real cy, Real r, Real x0, Real y0, Real x1, R
         area += top - bottom;
     }
     return std::max(area, Real(0));
-}
-
-Real linkWallFraction(Real px, Real py, int ex, int ey, Real r) {
-    // |p + t e| = r: the smaller root is where the link enters the disc.
-    const Real a = Real(ex * ex + ey * ey);
-    const Real b = 2 * (px * ex + py * ey);
-    const Real c = px * px + py * py - r * r;
-    const Real disc = std::max(b * b - 4 * a * c, Real(0));
-    return std::clamp((-b - std::sqrt(disc)) / (2 * a), Real(0), Real(1));
 }
 
 } // namespace lbdem::solver::coupling

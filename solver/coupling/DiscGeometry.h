@@ -26,6 +26,14 @@ inline Real cellSolidFraction(Real cx, Real cy, Real r, Real px, Real py) {
 
 /// Fraction q in [0, 1] of the link from (px, py) along (ex, ey) where it enters the circle of
 /// radius r centred at the origin-relative offset: (px, py) is measured from the disc centre.
-Real linkWallFraction(Real px, Real py, int ex, int ey, Real r);
+/// Inline: it runs once per moving-wall link.
+inline Real linkWallFraction(Real px, Real py, int ex, int ey, Real r) {
+    // |p + t e| = r: the smaller root is where the link enters the disc.
+    const Real a = Real(ex * ex + ey * ey);
+    const Real b = 2 * (px * ex + py * ey);
+    const Real c = px * px + py * py - r * r;
+    const Real disc = std::max(b * b - 4 * a * c, Real(0));
+    return std::clamp((-b - std::sqrt(disc)) / (2 * a), Real(0), Real(1));
+}
 
 } // namespace lbdem::solver::coupling

@@ -26,12 +26,9 @@ void Coupling::mapPsm() {
     for (std::size_t p = 0; p < n; ++p) {
         Real cx, cy, r;
         grainGeometry(p, cx, cy, r);
-        const int i0 = static_cast<int>(std::ceil(cx - r - m_originX - 0.5));
-        const int i1 = static_cast<int>(std::floor(cx + r - m_originX + 0.5));
-        const int j0 = static_cast<int>(std::ceil(cy - r - m_originY - 0.5));
-        const int j1 = static_cast<int>(std::floor(cy + r - m_originY + 0.5));
-        for (int ju = j0; ju <= j1; ++ju)
-            for (int iu = i0; iu <= i1; ++iu) {
+        const Box box = clippedBox(cx, cy, r, 0.5); // cells the disc overlaps
+        for (int ju = box.j0; ju <= box.j1; ++ju)
+            for (int iu = box.i0; iu <= box.i1; ++iu) {
                 const Real px = iu + m_originX, py = ju + m_originY;
                 const Real eps = cellSolidFraction(cx, cy, r, px, py);
                 if (eps <= 0) continue;

@@ -53,8 +53,9 @@ struct ObstacleLoad {
 /// where they came from. Both move 144 bytes per update (72 with float storage) with no
 /// write-allocate traffic, in half the memory of a two-lattice scheme. Where a population sits
 /// therefore depends on the parity of the step count: postSlot() and inSlot() say where, and
-/// population() / setPopulation() are the only way in from outside, since a float slot holds
-/// f_i - w_i (PopulationStorage). Boundary passes write the populations that solid neighbours
+/// population() / setPopulation() are the way in from outside, since a float slot holds
+/// f_i - w_i (PopulationStorage); only hot loops (the grain links) address the stored values
+/// directly, through storedDoubles() / storedFloats() and postSlotOffset(). Boundary passes write the populations that solid neighbours
 /// send into the fluid before the bulk kernel, so the kernel itself has no branches.
 class Lattice {
 public:
@@ -119,6 +120,18 @@ public:
     void setPopulation(long long slot, int dir, Real value) {
         if (m_setup.storage == PopulationStorage::Float) m_f32[slot] = StoredPopulation<float>::store(value, kW[dir]);
         else m_f64[slot] = value;
+    }
+    /// The stored values in slot order (f_i for double storage, f_i - w_i for float; null for the
+    /// other storage), for kernels outside the lattice that address slots themselves.
+    double* storedDoubles() { return m_f64.data(); }
+    float* storedFloats() { return m_f32.data(); }
+    /// Node flags (kFluid, kSolid, ...) per cell, for kernels outside the lattice.
+    const std::uint8_t* flags() const { return m_flags.data(); }
+    /// Offset from postSlot(cell, dir) to cell for every node whose neighbours need no wrapping:
+    /// postSlot(cell, dir) = cell + postSlotOffset(dir) at the current parity.
+    long long postSlotOffset(int dir) const {
+        return m_step & 1 ? kOpposite[dir] * m_cells
+                          : dir * m_cells + kCx[dir] + static_cast<long long>(kCy[dir]) * m_nx;
     }
     /// Record, in every following step, the incoming (streamed, pre-collision) populations of
     /// these cells after the boundary passes: partially saturated cells re-collide from them.

@@ -7,7 +7,8 @@
 
 namespace lbdem::solver::lattice {
 
-/// How the lattice stores its populations; the arithmetic is double either way.
+/// How the lattice stores its populations. The bulk kernel collides in the stored type (float
+/// storage: float arithmetic on the deviations, Collision.h); everything else works in double.
 enum class PopulationStorage {
     Double, ///< f_i as double: 8 bytes per value, 144 bytes moved per AA update
     Float,  ///< f_i - w_i as float (DDF shifting): 4 bytes per value, 72 bytes per update
@@ -36,7 +37,7 @@ struct StoredPopulation<double> {
     static LBDEM_KERNEL_INLINE double store(double f, double) { return f; }
 };
 
-/// Float storage: the deviation f_i - w_i, widened to double before any arithmetic.
+/// Float storage: the deviation f_i - w_i, widened to double for the accessors and boundary passes.
 template <>
 struct StoredPopulation<float> {
     /// The population held by a stored deviation.

@@ -3,6 +3,7 @@
 
 #include "solver/core/OpenMp.h"
 
+#include <type_traits>
 #include <utility>
 
 namespace lbdem::solver::lattice {
@@ -23,17 +24,16 @@ void sweepRows(int ny, int last, bool parallel, const Row& row) {
     }
 }
 
-/// Load the stored value v of a direction of weight kW[Q] as a population (PopulationStorage).
-template <int Q, class S>
-LBDEM_KERNEL_INLINE Real load(S v) { return StoredPopulation<S>::load(v, kW[Q]); }
-/// The stored value of population f of a direction of weight kW[Q].
-template <int Q, class S>
-LBDEM_KERNEL_INLINE S store(Real f) { return StoredPopulation<S>::store(f, kW[Q]); }
+/// Collide the nine stored values g of one node in their own arithmetic: doubles are the
+/// populations f_i, floats the deviations f_i - w_i (PopulationStorage), collided as such.
+template <class S, class C>
+LBDEM_KERNEL_INLINE void collideStored(const C& collide, S* g) {
+    collide.template apply<S, std::is_same_v<S, float>>(g);
+}
 
 /// AA step from an even step count: every node reads its own nine values (the populations that
 /// arrived, f_i in slot i), collides, and stores f*_i in its own slot opp(i). S is the stored
-/// number (double, or float holding f_i - w_i): values are widened and unshifted on the way in,
-/// collided in double and shifted and rounded on the way out.
+/// number (double, or float holding f_i - w_i), and the arithmetic: no conversion on the way.
 /// Rows are swept in the order of sweepRows.
 /// Pre: the boundary passes have filled the slots that solid neighbours send into the fluid.
 template <class S, class C>
@@ -50,18 +50,17 @@ void collideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRo
         S* __restrict p7 = f + 7 * cells + row;
         S* __restrict p8 = f + 8 * cells + row;
         auto node = [&](int x) __attribute__((always_inline)) {
-            Real g[9] = {load<0>(p0[x]), load<1>(p1[x]), load<2>(p2[x]), load<3>(p3[x]), load<4>(p4[x]),
-                         load<5>(p5[x]), load<6>(p6[x]), load<7>(p7[x]), load<8>(p8[x])};
-            collide(g);
-            p0[x] = store<0, S>(g[0]);
-            p3[x] = store<1, S>(g[1]);
-            p4[x] = store<2, S>(g[2]);
-            p1[x] = store<3, S>(g[3]);
-            p2[x] = store<4, S>(g[4]);
-            p7[x] = store<5, S>(g[5]);
-            p8[x] = store<6, S>(g[6]);
-            p5[x] = store<7, S>(g[7]);
-            p6[x] = store<8, S>(g[8]);
+            S g[9] = {p0[x], p1[x], p2[x], p3[x], p4[x], p5[x], p6[x], p7[x], p8[x]};
+            collideStored(collide, g);
+            p0[x] = g[0];
+            p3[x] = g[1];
+            p4[x] = g[2];
+            p1[x] = g[3];
+            p2[x] = g[4];
+            p7[x] = g[5];
+            p8[x] = g[6];
+            p5[x] = g[7];
+            p6[x] = g[8];
         };
         // Each node touches only its own values, so the loop carries no dependence.
 #pragma omp simd
@@ -90,18 +89,17 @@ void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, int 
         S* __restrict p7 = f + 7 * cells + rowS;
         S* __restrict p8 = f + 8 * cells + rowS;
         auto node = [&](int x, int xm, int xp) __attribute__((always_inline)) {
-            Real g[9] = {load<0>(p0[x]), load<1>(p3[xm]), load<2>(p4[x]), load<3>(p1[xp]), load<4>(p2[x]),
-                         load<5>(p7[xm]), load<6>(p8[xp]), load<7>(p5[xp]), load<8>(p6[xm])};
-            collide(g);
-            p0[x] = store<0, S>(g[0]);
-            p1[xp] = store<1, S>(g[1]);
-            p2[x] = store<2, S>(g[2]);
-            p3[xm] = store<3, S>(g[3]);
-            p4[x] = store<4, S>(g[4]);
-            p5[xp] = store<5, S>(g[5]);
-            p6[xm] = store<6, S>(g[6]);
-            p7[xm] = store<7, S>(g[7]);
-            p8[xp] = store<8, S>(g[8]);
+            S g[9] = {p0[x], p3[xm], p4[x], p1[xp], p2[x], p7[xm], p8[xp], p5[xp], p6[xm]};
+            collideStored(collide, g);
+            p0[x] = g[0];
+            p1[xp] = g[1];
+            p2[x] = g[2];
+            p3[xm] = g[3];
+            p4[x] = g[4];
+            p5[xp] = g[5];
+            p6[xm] = g[6];
+            p7[xm] = g[7];
+            p8[xp] = g[8];
         };
         node(0, nx - 1, 1 % nx);
 #pragma omp simd

@@ -3,7 +3,9 @@
 #include "solver/coupling/DiscGeometry.h"
 #include "solver/lattice/D2Q9.h"
 
+#include <QElapsedTimer>
 #include <QtTest>
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -62,6 +64,8 @@ private slots:
     void loadsReachDemInSi();
     void restartIsBitForBit();
     void cornerGrainStaysBounded();
+    void threadCountDoesNotMatter();
+    void farGrainsScanNoFurtherThanTheLattice();
 };
 
 void CouplingTest::cellFractionInsideOutsideHalf() {
@@ -313,6 +317,90 @@ void CouplingTest::cornerGrainStaysBounded() {
     qInfo("largest fluid speed %.3g, grain speed %.3g (lattice units)", worstU, worstV);
     QVERIFY2(worstV < 0.01, qPrintable(QString("grain speed %1 (lattice units)").arg(worstV)));
     QVERIFY(std::abs(grain.x[0] - radius) < 0.1 * h && std::abs(grain.y[0] - radius) < 0.1 * h);
+}
+
+void CouplingTest::threadCountDoesNotMatter() {
+    // 120 moving grains on a 320 x 320 lattice: enough surface nodes (over 4096) and cells for the
+    // mapping and the kernel to run in parallel. One and two threads must give the same
+    // populations and loads bit for bit (the links run row by row, the loads sum in a fixed order).
+    auto run = [](int threads, std::vector<double>& f, std::vector<double>& loads) {
+        omp_set_num_threads(threads);
+        lattice::LatticeSetup s = periodicBox(320);
+        s.left.type = s.right.type = lattice::SideType::Wall; // walls and periodic sides both
+        lattice::Lattice lat(s);
+        lat.initialise([](double x, double y, double& rho, double& ux, double& uy) {
+            rho = 1;
+            ux = 0.03 * std::sin(2 * kPi * y / 320);
+            uy = 0.02 * std::cos(2 * kPi * x / 320);
+        });
+        dem::DemSystem dem;
+        for (int k = 0; k < 120; ++k) {
+            const std::size_t p = dem.addDisc(20.3 + 25.1 * (k % 12), 14.7 + 30.2 * (k / 12), 8.4 + 0.1 * (k % 5));
+            dem.particles().vx[p] = 0.05 * std::sin(k);
+            dem.particles().vy[p] = 0.05 * std::cos(3 * k);
+            dem.particles().omega[p] = 0.002 * (k % 3 - 1);
+        }
+        coupling::Coupling link(lat, dem, latticeUnits(CouplingMethod::BounceBack));
+        for (int step = 0; step < 12; ++step) {
+            link.mapGrains();
+            lat.step();
+            link.collectForces();
+            for (std::size_t p = 0; p < dem.particles().size(); ++p) {
+                dem.particles().x[p] += dem.particles().vx[p];
+                dem.particles().y[p] += dem.particles().vy[p];
+            }
+        }
+        QVERIFY(link.boundaryCount() > 4096);
+        f = lat.exportPopulations();
+        loads.clear();
+        for (std::size_t p = 0; p < dem.particles().size(); ++p) {
+            const auto l = link.latticeLoad(p);
+            loads.insert(loads.end(), {l.fx, l.fy, l.torque});
+        }
+    };
+    const int before = omp_get_max_threads();
+    std::vector<double> f1, f2, l1, l2;
+    run(1, f1, l1);
+    run(2, f2, l2);
+    omp_set_num_threads(before);
+    QVERIFY(f1 == f2);
+    QVERIFY(l1 == l2);
+}
+
+void CouplingTest::farGrainsScanNoFurtherThanTheLattice() {
+    // A hostile checkpoint may put grains anywhere. A grain mapped inside the lattice, then moved
+    // 5e8 nodes away (its old and new boxes would span 5e8 columns), one at 1e300 and one at NaN:
+    // the scans are clipped to the lattice (one period across periodic sides), so mapping takes
+    // no longer than for grains inside, and nothing outside is covered.
+    for (bool periodic : {false, true}) {
+        lattice::LatticeSetup s = periodicBox(60);
+        if (!periodic) s.left.type = s.right.type = s.bottom.type = s.top.type = lattice::SideType::Wall;
+        lattice::Lattice lat(s);
+        dem::DemSystem dem;
+        dem.addDisc(30.2, 30.7, 6.5);
+        dem.addDisc(12.4, 40.1, 5.5);
+        dem.addDisc(45.4, 12.1, 5.5);
+        coupling::Coupling link(lat, dem, latticeUnits(CouplingMethod::BounceBack));
+        link.mapGrains();
+        lat.step();
+        link.collectForces();
+        auto& g = dem.particles();
+        g.x[0] = 5e8;
+        g.y[1] = 1e300;
+        g.x[2] = std::nan("");
+        QElapsedTimer clock;
+        clock.start();
+        for (int step = 0; step < 3; ++step) {
+            link.mapGrains();
+            lat.step();
+            link.collectForces();
+        }
+        QVERIFY2(clock.elapsed() < 2000, qPrintable(QString("%1 ms").arg(clock.elapsed())));
+        long long covered = 0;
+        for (std::int32_t owner : link.owners()) covered += owner >= 0;
+        if (!periodic) QCOMPARE(covered, 0LL); // all three grains left the walled lattice
+        QVERIFY(covered < lat.cells());
+    }
 }
 
 QTEST_APPLESS_MAIN(CouplingTest)

@@ -1,0 +1,220 @@
+// Which nodes the grains cover: clipped scan boxes, owner changes, swallowed and refilled fluid.
+//
+// A grain moves far less than a node per step, so from one step to the next it changes the owner
+// of a thin ring of nodes only. Each row of its scan box is split at the chord of the disc: the
+// nodes surely inside (one node clear of the circle) need only their owner read, and only the
+// few nodes near the circle get the exact test |x - c| < r_h. Nodes change owner in grain order
+// and, within a grain, row by row: the same order whatever the thread count.
+#include "solver/coupling/Coupling.h"
+
+#include "solver/core/OpenMp.h"
+#include "solver/lattice/D2Q9.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lbdem::solver::coupling {
+
+using lattice::equilibrium;
+using lattice::kCx;
+using lattice::kCy;
+using lattice::kQ;
+
+namespace {
+
+constexpr std::int32_t kNone = -1, kJustUncovered = -2;
+
+/// Fewer grains than this are scanned on one thread: a parallel region costs more than their work.
+constexpr std::size_t kParallelGrains = 32;
+
+/// Clip the node range [lo, hi] (whole numbers held as Real, possibly NaN or huge) to [min, max]
+/// and at most `period` nodes long (0: no limit); empty (i0 > i1) when nothing is left.
+void clipRange(Real lo, Real hi, Real min, Real max, Real period, int& i0, int& i1) {
+    i0 = 0;
+    i1 = -1;
+    if (!(lo <= hi)) return; // empty, or NaN
+    lo = std::max(lo, min);
+    hi = std::min(hi, max);
+    if (period > 0) hi = std::min(hi, lo + period - 1);
+    if (lo > hi) return;
+    i0 = static_cast<int>(lo);
+    i1 = static_cast<int>(hi);
+}
+
+} // namespace
+
+Coupling::Box Coupling::clippedBox(Real cx, Real cy, Real r, Real margin) const {
+    // Along a wall-bounded side the lattice itself; along a periodic one the unwrapped indices a
+    // period either side (grainGeometry brings centres there) and one period long at most.
+    const Real nx = m_lattice.nx(), ny = m_lattice.ny();
+    Box box;
+    clipRange(std::ceil(cx - r - m_originX - margin), std::floor(cx + r - m_originX + margin),
+              m_periodicX ? -nx : 0, m_periodicX ? 2 * nx - 1 : nx - 1, m_periodicX ? nx : 0, box.i0, box.i1);
+    clipRange(std::ceil(cy - r - m_originY - margin), std::floor(cy + r - m_originY + margin),
+              m_periodicY ? -ny : 0, m_periodicY ? 2 * ny - 1 : ny - 1, m_periodicY ? ny : 0, box.j0, box.j1);
+    if (box.i0 > box.i1 || box.j0 > box.j1) return Box{};
+    return box;
+}
+
+Coupling::Box Coupling::grainBox(std::size_t p) const {
+    // A node is solid when its centre lies strictly inside r_h: these bounds hold every such node.
+    Real cx, cy, r;
+    grainGeometry(p, cx, cy, r);
+    return clippedBox(cx, cy, r, 0);
+}
+
+void Coupling::findGrainChanges(std::size_t p, std::vector<Change>& out) const {
+    // Scan the grain's box now and the box it had: nodes it covers but does not own, and nodes it
+    // owns but no longer covers (all of them lie in the old box). Nothing is written, so grains
+    // scan in parallel.
+    Real cx, cy, r;
+    grainGeometry(p, cx, cy, r);
+    Box scan = grainBox(p);
+    const Box& last = m_box[p];
+    if (scan.i0 > scan.i1) scan = last;
+    else if (last.i0 <= last.i1 && last.j0 <= last.j1) {
+        scan.i0 = std::min(scan.i0, last.i0);
+        scan.i1 = std::max(scan.i1, last.i1);
+        scan.j0 = std::min(scan.j0, last.j0);
+        scan.j1 = std::max(scan.j1, last.j1);
+    }
+    const int nx = m_lattice.nx(), ny = m_lattice.ny();
+    // One period at most (a grain that just crossed a periodic side has boxes a period apart).
+    if (m_periodicX && scan.i1 - scan.i0 >= nx) scan.i1 = scan.i0 + nx - 1;
+    if (m_periodicY && scan.j1 - scan.j0 >= ny) scan.j1 = scan.j0 + ny - 1;
+    for (int ju = scan.j0; ju <= scan.j1; ++ju) {
+        int i = 0, j = ju;
+        if (!wrapNode(i, j)) continue;
+        Real dy = ju + m_originY - cy;
+        if (m_periodicY) dy -= ny * std::round(dy / ny);
+        scanRow(static_cast<std::int32_t>(p), ju, j, dy, scan.i0, scan.i1, cx, r, out);
+    }
+}
+
+void Coupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0, int i1, Real cx, Real r,
+                       std::vector<Change>& out) const {
+    const int nx = m_lattice.nx();
+    const long long rowBase = m_lattice.index(0, j);
+    // Nodes surely inside: at least one node inside the row's chord, so their distance to the
+    // circle dwarfs any rounding (empty across a periodic x side, where every node is tested,
+    // and for a centre that is not a number, which no comparison below would exclude).
+    int in0 = i1 + 1, in1 = i1;
+    if (!m_periodicX && dy * dy < r * r && std::isfinite(cx)) {
+        const Real half = std::sqrt(r * r - dy * dy), centre = cx - m_originX;
+        const Real lo = std::max(static_cast<Real>(i0), std::ceil(centre - half) + 1);
+        const Real hi = std::min(static_cast<Real>(i1), std::floor(centre + half) - 1);
+        if (lo <= hi) in0 = static_cast<int>(lo), in1 = static_cast<int>(hi);
+    }
+    for (int iu = i0; iu <= i1; ++iu) {
+        long long c;
+        bool geometric;
+        if (iu >= in0 && iu <= in1) {
+            c = rowBase + iu;
+            geometric = true;
+        } else {
+            int i = iu, jw = j;
+            if (!wrapNode(i, jw)) continue;
+            c = rowBase + i;
+            Real dx = iu + m_originX - cx;
+            if (m_periodicX) dx -= nx * std::round(dx / nx);
+            geometric = dx * dx + dy * dy < r * r;
+        }
+        const bool inside = geometric && m_lattice.isFluid(c);
+        const std::int32_t owner = m_owner[c];
+        if (inside && owner != id) out.push_back({c, id, iu, ju, true});
+        else if (!inside && owner == id) out.push_back({c, id, iu, ju, false});
+    }
+}
+
+void Coupling::findChanges() {
+    const std::size_t n = m_dem.particles().size();
+    const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
+    if (m_threadChanges.size() < static_cast<std::size_t>(threads)) m_threadChanges.resize(threads);
+    for (auto& list : m_threadChanges) list.clear();
+    // Static schedule: thread t takes the t-th block of grains, so the lists, read in thread
+    // order, hold the changes in grain order whatever the thread count.
+#pragma omp parallel num_threads(threads) if (threads > 1)
+    {
+        std::vector<Change>& out = m_threadChanges[ompThreadIndex()];
+#pragma omp for schedule(static)
+        for (long long p = 0; p < static_cast<long long>(n); ++p) {
+            findGrainChanges(static_cast<std::size_t>(p), out);
+            m_box[p] = grainBox(static_cast<std::size_t>(p));
+        }
+    }
+}
+
+void Coupling::applyChanges() {
+    // Grains first leave nodes, then take nodes in grain order, the lowest index winning a node
+    // two grains overlap. A node passing straight from one grain to another is not fluid at any
+    // point: it is neither refilled nor swallowed.
+    m_uncovered.clear();
+    for (const auto& list : m_threadChanges)
+        for (const Change& ch : list)
+            if (!ch.cover && m_owner[ch.cell] == ch.grain) {
+                m_owner[ch.cell] = kJustUncovered;
+                m_uncovered.push_back(ch);
+            }
+    for (const auto& list : m_threadChanges)
+        for (const Change& ch : list) {
+            if (!ch.cover) continue;
+            const std::int32_t owner = m_owner[ch.cell];
+            if (owner >= 0 && owner < ch.grain) continue;
+            if (owner == kNone && m_initialised) {
+                // Fluid swallowed by the grain hands its momentum to it.
+                Real cx, cy, r;
+                grainGeometry(ch.grain, cx, cy, r);
+                Real dx = ch.iu + m_originX - cx, dy = ch.ju + m_originY - cy;
+                if (m_periodicX) dx -= m_lattice.nx() * std::round(dx / m_lattice.nx());
+                if (m_periodicY) dy -= m_lattice.ny() * std::round(dy / m_lattice.ny());
+                long long slots[kQ];
+                m_lattice.postSlots(ch.cell, slots);
+                Real jx = 0, jy = 0;
+                for (int q = 1; q < kQ; ++q) {
+                    const Real v = m_lattice.population(slots[q], q);
+                    jx += kCx[q] * v;
+                    jy += kCy[q] * v;
+                }
+                m_loadX[ch.grain] += jx;
+                m_loadY[ch.grain] += jy;
+                m_loadT[ch.grain] += dx * jy - dy * jx;
+            }
+            m_owner[ch.cell] = ch.grain;
+            m_solid[ch.cell] = 1;
+        }
+}
+
+void Coupling::refillUncovered() {
+    // Refill (e.g. Peng et al. 2016): equilibrium at the mean density of the fluid neighbours and
+    // the velocity of the surface that just left the node; the grain pays that momentum.
+    for (const Change& c : m_uncovered) {
+        if (m_owner[c.cell] != kJustUncovered) continue;
+        Real rho = 0;
+        int count = 0;
+        for (int q = 1; q < kQ; ++q) {
+            const long long nb = wrapCell(c.iu + kCx[q], c.ju + kCy[q]);
+            if (nb < 0 || !m_lattice.isFluid(nb) || m_owner[nb] != kNone) continue;
+            rho += m_lattice.density(nb);
+            ++count;
+        }
+        rho = count > 0 ? rho / count : 1.0;
+        Real cx, cy, r, ux, uy;
+        grainGeometry(c.grain, cx, cy, r);
+        // Wrapped or not, the offset to the centre is taken modulo the periodic length.
+        Real dx = c.iu + m_originX - cx, dy = c.ju + m_originY - cy;
+        if (m_periodicX) dx -= m_lattice.nx() * std::round(dx / m_lattice.nx());
+        if (m_periodicY) dy -= m_lattice.ny() * std::round(dy / m_lattice.ny());
+        surfaceVelocity(c.grain, dx, dy, ux, uy);
+        m_loadX[c.grain] -= rho * ux;
+        m_loadY[c.grain] -= rho * uy;
+        m_loadT[c.grain] -= rho * (dx * uy - dy * ux);
+        long long slots[kQ];
+        m_lattice.postSlots(c.cell, slots);
+        for (int q = 0; q < kQ; ++q) m_lattice.setPopulation(slots[q], q, equilibrium(q, rho, ux, uy));
+        m_solid[c.cell] = 0;
+    }
+    for (const Change& c : m_uncovered)
+        if (m_owner[c.cell] == kJustUncovered) m_owner[c.cell] = kNone;
+}
+
+} // namespace lbdem::solver::coupling
