@@ -1,8 +1,10 @@
 // Every case `lbdem verify --list` names passes: the quick variants by default, the long ones (and
-// the cases marked slow) with LBDEM_VERIFY_LONG set. One data row per registered case.
+// the cases marked slow) with LBDEM_VERIFY_LONG set. One data row per registered case; CTest
+// runs the rows in shards (LBDEM_VERIFY_SHARD) so that they share its parallel slots.
 #include "solver/verification/Verification.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <set>
 
 using namespace lbdem::solver;
@@ -16,13 +18,25 @@ private slots:
 
 namespace {
 bool longRun() { return qEnvironmentVariableIsSet("LBDEM_VERIFY_LONG"); }
+
+/// LBDEM_VERIFY_SHARD = "k/n": run only every n-th selected case starting at the k-th (from 0),
+/// so that CTest can spread the cases over its parallel slots; unset: every case.
+bool inShard(int selected) {
+    const QStringList parts = qEnvironmentVariable("LBDEM_VERIFY_SHARD").split('/');
+    if (parts.size() != 2) return true;
+    const int k = parts[0].toInt(), n = std::max(parts[1].toInt(), 1);
+    return selected % n == k;
+}
 } // namespace
 
 void VerificationCasesTest::casePasses_data() {
     QTest::addColumn<int>("index");
     const auto& cases = verificationCases();
-    for (std::size_t k = 0; k < cases.size(); ++k)
-        if (longRun() || !cases[k].slow) QTest::newRow(cases[k].name.c_str()) << static_cast<int>(k);
+    int selected = 0;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        if (!longRun() && cases[k].slow) continue;
+        if (inShard(selected++)) QTest::newRow(cases[k].name.c_str()) << static_cast<int>(k);
+    }
 }
 
 void VerificationCasesTest::casePasses() {
