@@ -138,7 +138,7 @@ int runFluidBench(const BenchOptions& options) {
     return kExitOk;
 }
 
-// Particle-steps per second on a settled pile with the paper's grains (DESIGN §5b), for one
+// Particle-steps per second on a settled pile with the paper's grains (docs/design.md §5b), for one
 // thread and for the requested (or all) threads.
 int runDemBench(const BenchOptions& options) {
     const solver::CaseSpec defaults;

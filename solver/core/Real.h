@@ -3,7 +3,7 @@
 
 namespace lbdem::solver {
 
-/// Precision of solver state and arithmetic (DESIGN §5: double; float storage is a kernel option).
+/// Precision of solver state and arithmetic (docs/design.md §5: double; float storage is a kernel option).
 using Real = double;
 
 } // namespace lbdem::solver

@@ -13,7 +13,7 @@
 
 namespace lbdem::solver::coupling {
 
-/// How the fluid sees the grains (DESIGN §5 Coupling).
+/// How the fluid sees the grains (docs/design.md §5 Coupling).
 enum class CouplingMethod {
     BounceBack, ///< moving solid nodes, Bouzidi moving-wall links, momentum exchange (default)
     Psm,        ///< partially saturated cells (Noble & Torczynski 1998)

@@ -10,7 +10,7 @@
 
 namespace lbdem::solver::dem {
 
-/// What to measure. The contact law and sizes default to the paper's (DESIGN §5b).
+/// What to measure. The contact law and sizes default to the paper's (docs/design.md §5b).
 struct DemBenchConfig {
     int particles = 10000;          ///< discs in the pile
     Real d_min = 1.2e-3;            ///< smallest diameter [m]

@@ -12,7 +12,7 @@
 
 namespace lbdem::solver::lattice {
 
-/// The collision models of DESIGN §5.
+/// The collision models of docs/design.md §5.
 enum class CollisionModel { Bgk, Mrt, MrtLes };
 
 /// Parse "bgk" / "mrt" / "mrt_les" (the case-file words); throws std::invalid_argument otherwise.
@@ -101,7 +101,7 @@ private:
 };
 
 /// MRT after Lallemand & Luo (2000), moments (rho, e, eps, jx, qx, jy, qy, pxx, pxy) with the
-/// M of DESIGN §5: m* = m - S (m - m^eq) + (I - S/2) M S^Guo, f = M^-1 m*, where
+/// M of docs/design.md §5: m* = m - S (m - m^eq) + (I - S/2) M S^Guo, f = M^-1 m*, where
 /// M^-1 = M^T diag(1/9, 1/36, 1/36, 1/6, 1/12, 1/6, 1/12, 1/4, 1/4).
 /// With kLes the shear rate is s_nu = 1/tau*, tau* = (tau + sqrt(tau^2 + 18 C^2 sqrt(2Q)/rho))/2,
 /// Q = Pi_neq : Pi_neq (Hou et al. 1996; the force correction of Pi_neq is neglected).
@@ -165,7 +165,7 @@ struct MrtCollision {
             mPxx += (1 - T(0.5) * sNuHere) * 2 * (ux * fxT - uy * fyT);
             mPxy += (1 - T(0.5) * sNuHere) * (ux * fyT + uy * fxT);
         }
-        // f += M^T D dm, row by row of M (DESIGN §5).
+        // f += M^T D dm, row by row of M (docs/design.md §5).
         const T a = me * T(1.0 / 36), b = mEps * T(1.0 / 36);
         const T cx = mJx * T(1.0 / 6), dx = mQx * T(1.0 / 12);
         const T cy = mJy * T(1.0 / 6), dy = mQy * T(1.0 / 12);

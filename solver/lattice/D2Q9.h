@@ -1,4 +1,4 @@
-// The D2Q9 velocity set in the order of DESIGN §5: rest, E, N, W, S, NE, NW, SW, SE.
+// The D2Q9 velocity set in the order of docs/design.md §5: rest, E, N, W, S, NE, NW, SW, SE.
 #pragma once
 
 namespace lbdem::solver::lattice {

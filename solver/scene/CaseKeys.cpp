@@ -1,4 +1,4 @@
-// Every case key, declared once with its unit, range and documentation (STYLE §5).
+// Every case key, declared once with its unit, range and documentation (docs/design.md, Style §5).
 #include "solver/scene/CaseKeys.h"
 
 #include "solver/scene/CaseSchema.h"

@@ -16,7 +16,7 @@ namespace lbdem::solver {
 dem::Material grainMaterial(const GrainSpec& grains);
 
 /// Acceleration on the grains: g (sin theta, -cos theta) with +x downslope, times the buoyancy
-/// factor (1 - rho_f / rho_s) when the case is submerged (DESIGN §5: gravity acts on grains only).
+/// factor (1 - rho_f / rho_s) when the case is submerged (docs/design.md §5: gravity acts on grains only).
 Vec2 grainGravity(const CaseSpec& spec);
 
 /// The packing request of a case's column (grains section; gravity of the domain).

@@ -22,7 +22,7 @@ struct FlowScales {
     long long steps = 0;       ///< steps to run (the scene default when flow.steps = 0)
 };
 
-/// Scales of a flow case: L from the domain, U from Re and the viscosity (DESIGN §4); with
+/// Scales of a flow case: L from the domain, U from Re and the viscosity (docs/design.md §4); with
 /// flow.reynolds = 0 tau and U are imposed and Re follows. Throws InputError for Re = 0 without tau.
 FlowScales flowScales(const CaseSpec& spec);
 

@@ -20,7 +20,7 @@ struct ColumnGeometry {
 /// Column size that holds count discs at the target packing and aspect ratio.
 ColumnGeometry columnGeometry(const GrainSpec& grains);
 
-/// Lattice units and numbers that follow from a CaseSpec (DESIGN §4).
+/// Lattice units and numbers that follow from a CaseSpec (docs/design.md §4).
 struct Plan {
     bool has_fluid = false;   ///< false for dry scenes: no lattice is allocated
     bool has_grains = false;  ///< false for pure fluid scenes

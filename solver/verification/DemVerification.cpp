@@ -17,7 +17,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kOnsetPhases = 16;
 
-/// The paper's grain parameters (DESIGN §5b) for a dry case with restitution e and its DEM step.
+/// The paper's grain parameters (docs/design.md §5b) for a dry case with restitution e and its DEM step.
 CaseSpec demCase(double restitution) {
     CaseSpec spec;
     spec.fluid.enabled = false;

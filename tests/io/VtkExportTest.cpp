@@ -49,7 +49,7 @@ private:
 };
 
 void VtkExportTest::initTestCase() {
-    // Writing must never need a display (DESIGN §8): run the whole test without one.
+    // Writing must never need a display (docs/design.md §8): run the whole test without one.
     ::unsetenv("DISPLAY");
     QVERIFY(m_dir.isValid());
     support::writeSyntheticRun(m_dir.path().toStdString(), kFrames);

@@ -1,4 +1,4 @@
-// Render regression: 300x300 images of a synthetic snapshot against baselines (STYLE §7).
+// Render regression: 300x300 images of a synthetic snapshot against baselines (docs/design.md, Style §7).
 #include "tests/render/ImageBaseline.h"
 #include "tests/support/SyntheticSnapshot.h"
 #include "ui/vis/ForceChainLayer.h"

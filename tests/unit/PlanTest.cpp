@@ -1,4 +1,4 @@
-// Planning: the paper's numbers follow from its SI parameters (DESIGN §4, §5b).
+// Planning: the paper's numbers follow from its SI parameters (docs/design.md §4, §5b).
 #include "solver/core/InputError.h"
 #include "solver/scene/Plan.h"
 
