@@ -1,14 +1,11 @@
 // Linear spring-dashpot relations shared by the contact kernel and the planner.
 #include "solver/dem/ContactLaw.h"
+#include "solver/core/Constants.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace lbdem::solver::dem {
-
-namespace {
-constexpr Real kPi = 3.14159265358979323846;
-} // namespace
 
 Real dampingRatio(Real restitution) {
     // ln e = -pi zeta / sqrt(1 - zeta^2) for a linear oscillator that separates at zero overlap.

@@ -1,6 +1,7 @@
 // Packing generator: seeded diameters, a loose lattice, gravity deposition with a searched
 // preparation friction, then relaxation with the run's contact law.
 #include "solver/dem/Packing.h"
+#include "solver/core/Constants.h"
 
 #include "solver/core/InputError.h"
 #include "solver/dem/DemSystem.h"
@@ -15,7 +16,6 @@ namespace lbdem::solver::dem {
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 // Deposition runs with contacts 10 times softer (3.2 times longer contacts, so 3.2 times fewer
 // steps); the final relaxation with the real stiffness removes the extra overlap (~0.5 % of d).
 constexpr Real kSoften = 10;

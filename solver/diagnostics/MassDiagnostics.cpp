@@ -1,5 +1,6 @@
 // Runout of the main mass, energies, outline, packing and the Froude number of the flowing front layer.
 #include "solver/diagnostics/MassDiagnostics.h"
+#include "solver/core/Constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// Upper surface of the main mass per column of width bin; returns the heights per column.
 std::vector<double> surfaceHeights(const GrainArrays& g, const std::vector<bool>& main, double bin,

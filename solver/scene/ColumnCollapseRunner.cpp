@@ -1,5 +1,6 @@
 // The column collapse as a SceneRunner: DEM column, optional lattice and coupling, diagnostics.
 #include "solver/scene/ColumnCollapseRunner.h"
+#include "solver/core/Constants.h"
 
 #include "solver/coupling/Coupling.h"
 #include "solver/dem/DemGuard.h"
@@ -19,7 +20,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Two discs touch while their gap is below this fraction of d_min. The main mass links discs
 /// across gaps up to one largest diameter d_max (see mainMass): a lone disc parting from or
 /// rejoining a chain then moves the front by at most its own diameter plus a contact gap.

@@ -1,5 +1,6 @@
 // The column-collapse scene: packing, walls, gate release, and its snapshot.
 #include "solver/scene/ColumnScene.h"
+#include "solver/core/Constants.h"
 
 #include "solver/core/InputError.h"
 #include "solver/dem/DemGuard.h"
@@ -12,7 +13,6 @@
 namespace lbdem::solver {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 /// Before release the column settles under the run's gravity until its fastest disc is slower
 /// than this [m/s] (the column-at-rest check asks for 1e-4 after 0.5 tau_c in still water) ...
 constexpr double kSettledSpeed = 1e-5;

@@ -1,5 +1,6 @@
 // SI metrics of the flow scenes, each compared with its analytic or published reference.
 #include "solver/scene/FlowScene.h"
+#include "solver/core/Constants.h"
 
 #include "solver/lattice/D2Q9.h"
 #include "solver/scene/SceneMetrics.h"
@@ -11,7 +12,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 } // namespace
 

@@ -1,5 +1,6 @@
 // Planning of the verification flows: characteristic length, Reynolds number, lattice velocity.
 #include "solver/scene/FlowPlan.h"
+#include "solver/core/Constants.h"
 
 #include "solver/core/InputError.h"
 
@@ -11,7 +12,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kSoundSpeed = 0.57735026918962576;
 // Schäfer & Turek (1996) 2D-1: channel height H = 4.1 D; Re uses the mean inflow 2/3 U_max.
 constexpr double kCylinderHeightOverD = 4.1;

@@ -1,5 +1,6 @@
 // Flow scene builders: lattice set-up, initial state, stepping and SI snapshots.
 #include "solver/scene/FlowScene.h"
+#include "solver/core/Constants.h"
 
 #include "solver/scene/FluidFields.h"
 
@@ -13,7 +14,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const FlowScales& s) {
     using lattice::SideType;

@@ -1,5 +1,6 @@
 // Planning: from SI case parameters to lattice units, time steps and a cost estimate.
 #include "solver/scene/Plan.h"
+#include "solver/core/Constants.h"
 
 #include "solver/core/InputError.h"
 #include "solver/dem/ContactLaw.h"
@@ -14,7 +15,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kSoundSpeed = 0.57735026918962576; // c_s = 1/sqrt(3) in lattice units
 constexpr int kQ = 9;
 // The longest submerged runout the paper's first author reports (thesis, Delta L ~ 3.1 for the

@@ -1,5 +1,6 @@
 // Permeability of a fixed random disc packing against the hydrodynamic radius (the paper's Figure 3).
 #include "solver/verification/CouplingVerification.h"
+#include "solver/core/Constants.h"
 
 #include "solver/core/InputError.h"
 #include "solver/dem/DemSystem.h"
@@ -16,7 +17,6 @@ namespace lbdem::solver {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kPi = 3.14159265358979323846;
 
 struct Disc {
     Real x, y, r;

@@ -1,6 +1,7 @@
 // Equilibrium checks of the coupling: bodies at rest in still fluid feel nothing, a column at rest
 // puts its buoyant weight on the floor.
 #include "solver/verification/CouplingVerification.h"
+#include "solver/core/Constants.h"
 
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
@@ -19,7 +20,6 @@ namespace {
 using coupling::CouplingMethod;
 using Clock = std::chrono::steady_clock;
 constexpr CouplingMethod kMethods[] = {CouplingMethod::BounceBack, CouplingMethod::Psm};
-constexpr double kPi = 3.14159265358979323846;
 
 // The paper's grains and water (Kumar et al.): d = 1.2 mm at d/h = 6, tau = 0.506.
 constexpr double kDiameter = 1.2e-3, kNodesPerDiameter = 6, kRhoS = 2650, kRhoF = 1000, kGravity = 9.81;

@@ -1,5 +1,6 @@
 // The coupling verification cases: each scene run with both methods, error and wall time side by side.
 #include "solver/verification/CouplingVerification.h"
+#include "solver/core/Constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,6 @@ namespace {
 
 using coupling::CouplingMethod;
 constexpr CouplingMethod kMethods[] = {CouplingMethod::BounceBack, CouplingMethod::Psm};
-constexpr double kPi = 3.14159265358979323846;
 
 VerificationResult relative(const std::string& name, const std::string& quantity, const CouplingRun& run,
                             double reference, double tolerance, const std::string& source,

@@ -1,5 +1,6 @@
 // The coupled scenes behind the coupling verification cases, each runnable with either method.
 #include "solver/verification/CouplingVerification.h"
+#include "solver/core/Constants.h"
 
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
@@ -17,7 +18,6 @@ using lattice::CollisionModel;
 using lattice::LatticeSetup;
 using lattice::SideType;
 using Clock = std::chrono::steady_clock;
-constexpr double kPi = 3.14159265358979323846;
 
 /// Lattice, grains and their coupling, stepped in the order a coupled simulation uses.
 struct Rig {

@@ -1,5 +1,6 @@
 // DEM verification: binary restitution and a disc on a 45-degree incline against analytic values.
 #include "solver/verification/DemVerification.h"
+#include "solver/core/Constants.h"
 
 #include "solver/dem/DemSystem.h"
 #include "solver/scene/ColumnScene.h"
@@ -14,7 +15,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kOnsetPhases = 16;
 
 /// The paper's grain parameters (docs/design.md §5b) for a dry case with restitution e and its DEM step.
