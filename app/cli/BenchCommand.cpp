@@ -4,9 +4,9 @@
 #include "app/cli/Commands.h"
 #include "solver/core/InputError.h"
 #include "solver/dem/DemBench.h"
-#include "solver/scene/ColumnScene.h"
 #include "solver/lattice/Lattice.h"
 #include "solver/lattice/MemoryBandwidth.h"
+#include "solver/scene/ColumnScene.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -73,14 +73,17 @@ double measureKernel(lat::CollisionModel model, lat::PopulationStorage storage, 
     setup.collision.model = model;
     setup.collision.tau = 0.506;
     lat::Lattice lattice(setup);
-    for (int s = 0; s < 3; ++s) lattice.step(); // warm up caches, pages and threads
+    for (int s = 0; s < 3; ++s)
+        lattice.step(); // warm up caches, pages and threads
     const double updatesPerStep = static_cast<double>(nx) * ny;
     const int steps = std::max(5, static_cast<int>(150e6 / updatesPerStep));
     std::vector<double> runs;
     for (int r = 0; r < kRepeats; ++r) {
         const auto start = std::chrono::steady_clock::now();
-        for (int s = 0; s < steps; ++s) lattice.step();
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        for (int s = 0; s < steps; ++s)
+            lattice.step();
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         runs.push_back(updatesPerStep * steps / seconds / 1e6);
     }
     std::sort(runs.begin(), runs.end());
@@ -103,7 +106,8 @@ int runFluidBench(const BenchOptions& options) {
     std::vector<KernelResult> results;
     // Double rows first (as before float storage existed), then the same models on float.
     for (auto storage : {lat::PopulationStorage::Double, lat::PopulationStorage::Float})
-        for (auto model : {lat::CollisionModel::Bgk, lat::CollisionModel::Mrt, lat::CollisionModel::MrtLes}) {
+        for (auto model :
+             {lat::CollisionModel::Bgk, lat::CollisionModel::Mrt, lat::CollisionModel::MrtLes}) {
             KernelResult r;
             r.name = lat::collisionName(model);
             r.precision = lat::storageName(storage);
@@ -111,7 +115,8 @@ int runFluidBench(const BenchOptions& options) {
             r.bytesPerUpdate = bytesPerUpdate(storage);
             results.push_back(r);
         }
-    for (double rate : lat::measureBandwidthPassesGBs()) passes.push_back(rate);
+    for (double rate : lat::measureBandwidthPassesGBs())
+        passes.push_back(rate);
     std::sort(passes.begin(), passes.end());
     const double bandwidth = 0.5 * (passes[(passes.size() - 1) / 2] + passes[passes.size() / 2]);
     for (auto& r : results) {
@@ -121,16 +126,23 @@ int runFluidBench(const BenchOptions& options) {
     if (options.json) {
         nlohmann::json kernels = nlohmann::json::array();
         for (const auto& r : results)
-            kernels.push_back({{"name", r.name}, {"precision", r.precision}, {"mlups", r.mlups},
+            kernels.push_back({{"name", r.name},
+                               {"precision", r.precision},
+                               {"mlups", r.mlups},
                                {"bytes_per_update", r.bytesPerUpdate},
-                               {"roofline_mlups", r.rooflineMlups}, {"fraction", r.fraction}});
-        const nlohmann::json doc = {{"bandwidth_gbs", bandwidth}, {"threads", threads},
-                                    {"nx", nx}, {"ny", ny}, {"kernels", kernels}};
+                               {"roofline_mlups", r.rooflineMlups},
+                               {"fraction", r.fraction}});
+        const nlohmann::json doc = {{"bandwidth_gbs", bandwidth},
+                                    {"threads", threads},
+                                    {"nx", nx},
+                                    {"ny", ny},
+                                    {"kernels", kernels}};
         std::cout << doc.dump(2) << "\n";
         return kExitOk;
     }
-    std::printf("memory bandwidth %.2f GB/s (in-place read-modify-write), %d threads, %d x %d nodes\n",
-                bandwidth, threads, nx, ny);
+    std::printf(
+        "memory bandwidth %.2f GB/s (in-place read-modify-write), %d threads, %d x %d nodes\n",
+        bandwidth, threads, nx, ny);
     for (const auto& r : results)
         std::printf("%-8s %-6s %8.1f MLUPS  %4.0f B/update  roofline %7.1f MLUPS  fraction %.3f\n",
                     r.name.c_str(), r.precision.c_str(), r.mlups, r.bytesPerUpdate, r.rooflineMlups,
@@ -154,16 +166,22 @@ int runDemBench(const BenchOptions& options) {
 #endif
     config.threads = {1};
     if (most > 1) config.threads.push_back(most);
-    if (!options.json) std::printf("building (or reading) a settled %d-disc pile...\n", config.particles);
+    if (!options.json)
+        std::printf("building (or reading) a settled %d-disc pile...\n", config.particles);
     const solver::dem::DemBenchResult result = solver::dem::runDemBench(config);
     if (options.json) {
         nlohmann::json runs = nlohmann::json::array();
         for (const auto& r : result.runs)
-            runs.push_back({{"threads", r.threads}, {"particles", r.particles}, {"steps", r.steps},
-                            {"seconds", r.seconds}, {"particle_steps_per_s", r.particle_steps_per_s},
+            runs.push_back({{"threads", r.threads},
+                            {"particles", r.particles},
+                            {"steps", r.steps},
+                            {"seconds", r.seconds},
+                            {"particle_steps_per_s", r.particle_steps_per_s},
                             {"best_particle_steps_per_s", r.best_particle_steps_per_s},
-                            {"rebuilds", r.rebuilds}, {"contacts", r.contacts}});
-        const nlohmann::json doc = {{"dem", runs}, {"dt_s", result.dt},
+                            {"rebuilds", r.rebuilds},
+                            {"contacts", r.contacts}});
+        const nlohmann::json doc = {{"dem", runs},
+                                    {"dt_s", result.dt},
                                     {"packing_fraction", result.packing_fraction},
                                     {"pile_seconds", result.pile_seconds},
                                     {"pile_from_cache", result.pile_from_cache}};
@@ -171,9 +189,11 @@ int runDemBench(const BenchOptions& options) {
         return kExitOk;
     }
     std::printf("pile: fraction %.4f, %s in %.1f s; dt %.3g s\n", result.packing_fraction,
-                result.pile_from_cache ? "read from cache" : "generated", result.pile_seconds, result.dt);
+                result.pile_from_cache ? "read from cache" : "generated", result.pile_seconds,
+                result.dt);
     for (const auto& r : result.runs)
-        std::printf("threads %d  %zu discs  %lld steps  %.2f s  %.2f M particle-steps/s (median; best %.2f)  "
+        std::printf("threads %d  %zu discs  %lld steps  %.2f s  %.2f M particle-steps/s (median; "
+                    "best %.2f)  "
                     "(%lld rebuilds, %zu contacts)\n",
                     r.threads, r.particles, r.steps, r.seconds, r.particle_steps_per_s / 1e6,
                     r.best_particle_steps_per_s / 1e6, r.rebuilds, r.contacts);
@@ -195,13 +215,15 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     command->add_option("--size", options->size, "Lattice size NXxNY (default 2000x1000)");
     command->add_flag("--dem", options->dem, "Benchmark the DEM instead of the lattice");
     auto caseOptions = std::make_shared<CaseBenchOptions>();
-    command->add_option("--case", caseOptions->path,
-                        "Run this case for --tc and print per stage the time per step and its share, "
-                        "effective MLUPS, the bandwidth roofline and the projected time to the case's end; "
-                        "--json: {bandwidth_gbs, roofline_mlups, effective_mlups, stages: {name: s per "
-                        "step}, projected_end_s, threads, storage, ...}");
+    command->add_option(
+        "--case", caseOptions->path,
+        "Run this case for --tc and print per stage the time per step and its share, "
+        "effective MLUPS, the bandwidth roofline and the projected time to the case's end; "
+        "--json: {bandwidth_gbs, roofline_mlups, effective_mlups, stages: {name: s per "
+        "step}, projected_end_s, threads, storage, ...}");
     command->add_option("--tc", caseOptions->tc, "Span of the --case run in tau_c (default 0.5)");
-    command->add_option("--set", caseOptions->overrides, "With --case: override a case key, key=value (repeatable)");
+    command->add_option("--set", caseOptions->overrides,
+                        "With --case: override a case key, key=value (repeatable)");
     command->callback([options, caseOptions, &exitCode] {
         if (!caseOptions->path.empty()) {
             caseOptions->json = options->json;

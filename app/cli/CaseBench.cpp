@@ -32,7 +32,10 @@ double median(std::vector<double> values) {
 
 /// Bytes moved per node update by the in-place (AA) bulk kernel: nine values read, nine written.
 double bytesPerUpdate(const std::string& storage) {
-    return 2.0 * 9 * (solver::lattice::storageFromName(storage) == solver::lattice::PopulationStorage::Float ? 4 : 8);
+    return 2.0 * 9 *
+           (solver::lattice::storageFromName(storage) == solver::lattice::PopulationStorage::Float
+                ? 4
+                : 8);
 }
 
 } // namespace
@@ -42,8 +45,10 @@ int runCaseBench(const CaseBenchOptions& options) {
     const solver::CaseSpec spec = CaseOptions{options.path, options.overrides}.load();
     const solver::Plan plan = solver::makePlan(spec);
 #ifdef _OPENMP
-    if (options.threads > 0) omp_set_num_threads(options.threads);
-    else if (spec.run.threads > 0) omp_set_num_threads(spec.run.threads);
+    if (options.threads > 0)
+        omp_set_num_threads(options.threads);
+    else if (spec.run.threads > 0)
+        omp_set_num_threads(spec.run.threads);
     const int threads = omp_get_max_threads();
 #else
     const int threads = 1;
@@ -57,8 +62,10 @@ int runCaseBench(const CaseBenchOptions& options) {
         simulation.step();
         ++steps;
     }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (double rate : solver::lattice::measureBandwidthPassesGBs()) passes.push_back(rate);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (double rate : solver::lattice::measureBandwidthPassesGBs())
+        passes.push_back(rate);
     const double bandwidth = median(passes);
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
     const double perStep = steps > 0 ? wall / steps : 0;
@@ -70,29 +77,43 @@ int runCaseBench(const CaseBenchOptions& options) {
         nlohmann::json stages = nlohmann::json::object();
         for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k) {
             const auto stage = static_cast<solver::Stage>(k);
-            stages[std::string(solver::stageName(stage))] = steps > 0 ? timer.seconds(stage) / steps : 0.0;
+            stages[std::string(solver::stageName(stage))] =
+                steps > 0 ? timer.seconds(stage) / steps : 0.0;
         }
-        const nlohmann::json doc = {{"case", spec.name}, {"tc", options.tc}, {"steps", steps},
-                                    {"wall_s", wall}, {"nx", plan.nx}, {"ny", plan.ny},
-                                    {"bandwidth_gbs", bandwidth}, {"roofline_mlups", roofline},
-                                    {"effective_mlups", effective}, {"stages", stages},
-                                    {"projected_end_s", projected}, {"end_tc", plan.end_time_s / plan.tc_s},
-                                    {"threads", threads}, {"storage", spec.fluid.storage}};
+        const nlohmann::json doc = {{"case", spec.name},
+                                    {"tc", options.tc},
+                                    {"steps", steps},
+                                    {"wall_s", wall},
+                                    {"nx", plan.nx},
+                                    {"ny", plan.ny},
+                                    {"bandwidth_gbs", bandwidth},
+                                    {"roofline_mlups", roofline},
+                                    {"effective_mlups", effective},
+                                    {"stages", stages},
+                                    {"projected_end_s", projected},
+                                    {"end_tc", plan.end_time_s / plan.tc_s},
+                                    {"threads", threads},
+                                    {"storage", spec.fluid.storage}};
         std::cout << doc.dump(2) << "\n";
         return kExitOk;
     }
-    std::printf("%s: %lld steps (%.3g tau_c) of %d x %d nodes in %.2f s on %d threads, %s storage\n",
-                spec.name.c_str(), steps, options.tc, plan.nx, plan.ny, wall, threads, spec.fluid.storage.c_str());
+    std::printf(
+        "%s: %lld steps (%.3g tau_c) of %d x %d nodes in %.2f s on %d threads, %s storage\n",
+        spec.name.c_str(), steps, options.tc, plan.nx, plan.ny, wall, threads,
+        spec.fluid.storage.c_str());
     const double staged = std::max(timer.total(), 1e-300);
     for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k) {
         const auto stage = static_cast<solver::Stage>(k);
-        std::printf("  %-20s %9.3f ms/step  %5.1f %%\n", std::string(solver::stageName(stage)).c_str(),
-                    steps > 0 ? 1e3 * timer.seconds(stage) / steps : 0.0, 100 * timer.seconds(stage) / staged);
+        std::printf("  %-20s %9.3f ms/step  %5.1f %%\n",
+                    std::string(solver::stageName(stage)).c_str(),
+                    steps > 0 ? 1e3 * timer.seconds(stage) / steps : 0.0,
+                    100 * timer.seconds(stage) / staged);
     }
-    std::printf("effective %.1f MLUPS; roofline %.1f MLUPS (memory bandwidth %.2f GB/s, %.0f B/update)\n",
-                effective, roofline, bandwidth, bytesPerUpdate(spec.fluid.storage));
-    std::printf("projected to the case's end (%.3g tau_c, %.0f steps): %.0f s\n", plan.end_time_s / plan.tc_s,
-                plan.end_time_s / plan.dt_s, projected);
+    std::printf(
+        "effective %.1f MLUPS; roofline %.1f MLUPS (memory bandwidth %.2f GB/s, %.0f B/update)\n",
+        effective, roofline, bandwidth, bytesPerUpdate(spec.fluid.storage));
+    std::printf("projected to the case's end (%.3g tau_c, %.0f steps): %.0f s\n",
+                plan.end_time_s / plan.tc_s, plan.end_time_s / plan.dt_s, projected);
     return kExitOk;
 }
 

@@ -18,7 +18,8 @@ void CaseOptions::addTo(CLI::App& command, bool caseRequired) {
 solver::CaseSpec CaseOptions::load() const {
     if (path.empty()) {
         solver::CaseSpec spec;
-        for (const auto& assignment : overrides) io::applyOverride(spec, assignment);
+        for (const auto& assignment : overrides)
+            io::applyOverride(spec, assignment);
         return spec;
     }
     return io::loadCase(path, overrides);

@@ -14,8 +14,10 @@ namespace lbdem::cli {
 int runCli(int argc, char** argv) {
     CLI::App app{"lbdem — 2D lattice-Boltzmann / discrete-element simulator of submerged "
                  "granular flows"};
-    app.footer("Exit codes: 0 success; 1 failure (a file that cannot be written, memory exhausted, failed runs "
-               "in a sweep or study); 2 bad input (case, options, output folder, checkpoint); 3 a run stopped by "
+    app.footer("Exit codes: 0 success; 1 failure (a file that cannot be written, memory exhausted, "
+               "failed runs "
+               "in a sweep or study); 2 bad input (case, options, output folder, checkpoint); 3 a "
+               "run stopped by "
                "a stability guard (lattice or DEM; summary.json gives the diagnosis).");
     app.require_subcommand(1);
     app.set_version_flag("--version", "lbdem 0.1.0");

@@ -11,7 +11,8 @@ namespace lbdem::cli {
 inline std::string formatDuration(double s) {
     char buffer[32];
     if (s >= 3600)
-        std::snprintf(buffer, sizeof buffer, "%dh%02dm", int(s / 3600), int(std::fmod(s, 3600) / 60));
+        std::snprintf(buffer, sizeof buffer, "%dh%02dm", int(s / 3600),
+                      int(std::fmod(s, 3600) / 60));
     else if (s >= 60)
         std::snprintf(buffer, sizeof buffer, "%dm%02ds", int(s / 60), int(std::fmod(s, 60)));
     else

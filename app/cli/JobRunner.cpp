@@ -29,12 +29,14 @@ pid_t spawnJob(const Job& job) {
     posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     std::vector<char*> argv;
-    for (const auto& arg : job.argv) argv.push_back(const_cast<char*>(arg.c_str()));
+    for (const auto& arg : job.argv)
+        argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);
     pid_t pid = 0;
     const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
-    if (error != 0) throw std::runtime_error("cannot start " + job.argv.front() + " for " + job.label);
+    if (error != 0)
+        throw std::runtime_error("cannot start " + job.argv.front() + " for " + job.label);
     return pid;
 }
 
@@ -49,7 +51,8 @@ std::vector<JobResult> runJobs(const std::vector<Job>& jobs, int maxParallel,
     std::size_t next = 0;
     int done = 0;
     const int total = static_cast<int>(jobs.size());
-    const auto tickPeriod = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(tickPeriodS));
+    const auto tickPeriod =
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(tickPeriodS));
     auto nextTick = Clock::now() + tickPeriod;
     while (next < jobs.size() || !running.empty()) {
         while (next < jobs.size() && static_cast<int>(running.size()) < std::max(1, maxParallel)) {
@@ -63,9 +66,12 @@ std::vector<JobResult> runJobs(const std::vector<Job>& jobs, int maxParallel,
             if (Clock::now() >= nextTick) {
                 std::vector<RunningJob> going;
                 for (const auto& [child, job] : running)
-                    going.push_back({job.first, std::chrono::duration<double>(Clock::now() - job.second).count()});
-                std::sort(going.begin(), going.end(),
-                          [](const RunningJob& a, const RunningJob& b) { return a.index < b.index; });
+                    going.push_back(
+                        {job.first,
+                         std::chrono::duration<double>(Clock::now() - job.second).count()});
+                std::sort(going.begin(), going.end(), [](const RunningJob& a, const RunningJob& b) {
+                    return a.index < b.index;
+                });
                 onTick(going);
                 nextTick = Clock::now() + tickPeriod;
             }
@@ -98,7 +104,9 @@ void shareCoresBetweenJobs(int maxParallel) {
     // Oversubscribed cores slow every job down (busy-waiting OpenMP threads most of all).
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     if (maxParallel > 1 && !std::getenv("OMP_NUM_THREADS"))
-        ::setenv("OMP_NUM_THREADS", std::to_string(std::max(1u, cores / static_cast<unsigned>(maxParallel))).c_str(), 1);
+        ::setenv("OMP_NUM_THREADS",
+                 std::to_string(std::max(1u, cores / static_cast<unsigned>(maxParallel))).c_str(),
+                 1);
 }
 
 } // namespace lbdem::cli

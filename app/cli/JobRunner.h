@@ -19,7 +19,7 @@ struct Job {
 struct JobResult {
     std::string label;
     std::size_t index = 0; ///< position in the job list
-    int exit_code = -1; ///< process exit code, or 128 + signal
+    int exit_code = -1;    ///< process exit code, or 128 + signal
     double wall_s = 0;
 };
 
@@ -34,9 +34,10 @@ using JobTick = std::function<void(const std::vector<RunningJob>& running)>;
 
 /// Run jobs with at most maxParallel at once; onFinished is called as each ends and onTick (if
 /// set) every tickPeriodS, both in the caller's thread. Returns the results in the order of jobs.
-std::vector<JobResult> runJobs(const std::vector<Job>& jobs, int maxParallel,
-                               const std::function<void(const JobResult&, int done, int total)>& onFinished,
-                               const JobTick& onTick = {}, double tickPeriodS = 60);
+std::vector<JobResult>
+runJobs(const std::vector<Job>& jobs, int maxParallel,
+        const std::function<void(const JobResult&, int done, int total)>& onFinished,
+        const JobTick& onTick = {}, double tickPeriodS = 60);
 
 /// Share the cores between maxParallel jobs going at once (OMP_NUM_THREADS for the children),
 /// unless the user set OMP_NUM_THREADS.

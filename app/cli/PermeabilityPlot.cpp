@@ -27,7 +27,8 @@ bool writePermeabilityPlot(const std::string& csvPath, const std::string& pngPat
         std::stringstream row(line);
         std::string cell;
         std::vector<std::string> cells;
-        while (std::getline(row, cell, ',')) cells.push_back(cell);
+        while (std::getline(row, cell, ','))
+            cells.push_back(cell);
         if (cells.size() < 6) continue;
         const double porosity = std::stod(cells[2]);
         auto& series = methods[cells[0]];
@@ -47,7 +48,8 @@ bool writePermeabilityPlot(const std::string& csvPath, const std::string& pngPat
     spec.title = "Permeability of a random disc packing (hydrodynamic radius 0.7 ... 0.95 R)";
     spec.xTitle = "quasi-porosity n";
     spec.yTitle = "K / d^2";
-    for (auto& [name, series] : methods) spec.series.push_back(series);
+    for (auto& [name, series] : methods)
+        spec.series.push_back(series);
     spec.series.push_back(spheres);
     spec.series.push_back(cylinders);
     vis::ensureDisplay();

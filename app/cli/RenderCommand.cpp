@@ -43,7 +43,8 @@ std::pair<int, int> parseSize(const std::string& text) {
     char extra = 0;
     if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &extra) != 2 || width < 16 ||
         height < 16 || width > 16384 || height > 16384)
-        throw solver::InputError("--size '" + text + "': expected WIDTHxHEIGHT in pixels, e.g. "
+        throw solver::InputError("--size '" + text +
+                                 "': expected WIDTHxHEIGHT in pixels, e.g. "
                                  "1200x800 (16 to 16384 a side)");
     return {width, height};
 }
@@ -55,7 +56,8 @@ vis::ColorRange parseRange(const std::string& option, const std::string& text) {
     double low = 0, high = 0;
     char extra = 0;
     if (std::sscanf(text.c_str(), "%lf,%lf%c", &low, &high, &extra) != 2 || !(low < high))
-        throw solver::InputError(option + " '" + text + "': expected MIN,MAX with MIN < MAX, e.g. 0,0.1");
+        throw solver::InputError(option + " '" + text +
+                                 "': expected MIN,MAX with MIN < MAX, e.g. 0,0.1");
     range.fixed = true;
     range.min = low;
     range.max = high;
@@ -66,7 +68,8 @@ vis::ColorRange parseRange(const std::string& option, const std::string& text) {
 std::vector<int> chosenFrames(const RenderOptions& options, const vis::VtkRunReader& reader) {
     std::vector<int> frames;
     if (options.all) {
-        for (int k = 0; k < reader.frameCount(); ++k) frames.push_back(k);
+        for (int k = 0; k < reader.frameCount(); ++k)
+            frames.push_back(k);
     } else if (options.time) {
         frames.push_back(reader.frameNearestTime(*options.time));
     } else if (options.frame.empty() || options.frame == "last") {
@@ -80,7 +83,8 @@ std::vector<int> chosenFrames(const RenderOptions& options, const vis::VtkRunRea
             used = 0;
         }
         if (used != options.frame.size() || frame < 0)
-            throw solver::InputError("--frame '" + options.frame + "': expected a frame number or 'last'");
+            throw solver::InputError("--frame '" + options.frame +
+                                     "': expected a frame number or 'last'");
         frames.push_back(frame);
     }
     return frames;
@@ -114,7 +118,8 @@ void render(const RenderOptions& options) {
         const std::string path = outputPath(options, frame);
         renderer.renderPng(snapshot, path);
         if (!options.quiet)
-            std::cout << "wrote " << path << " (frame " << frame << ", " << vis::timeLabel(snapshot) << ")\n";
+            std::cout << "wrote " << path << " (frame " << frame << ", " << vis::timeLabel(snapshot)
+                      << ")\n";
     }
 }
 
@@ -126,27 +131,37 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                                                  "starts a private Xvfb when DISPLAY is unset");
     command->add_option("run_dir", options->runDir, "Run output folder (holding vtk/particles.pvd)")
         ->required();
-    auto* time = command->add_option("--time", options->time, "Render the frame nearest to T seconds");
-    auto* frame = command->add_option("--frame", options->frame, "Render frame N, or 'last' (the default)");
-    auto* all = command->add_flag("--all", options->all, "Render every frame into the --png folder");
+    auto* time =
+        command->add_option("--time", options->time, "Render the frame nearest to T seconds");
+    auto* frame =
+        command->add_option("--frame", options->frame, "Render frame N, or 'last' (the default)");
+    auto* all =
+        command->add_flag("--all", options->all, "Render every frame into the --png folder");
     time->excludes(frame)->excludes(all);
     frame->excludes(all);
-    command->add_option("--png", options->png, "Output PNG file, or folder (with --all)")->required();
-    command->add_option("--size", options->size, "Image size WIDTHxHEIGHT in pixels")->capture_default_str();
-    command->add_option("--layers", options->layers,
-                        "Comma-separated layers: fluid,grains,chains,outline,streamlines")
+    command->add_option("--png", options->png, "Output PNG file, or folder (with --all)")
+        ->required();
+    command->add_option("--size", options->size, "Image size WIDTHxHEIGHT in pixels")
+        ->capture_default_str();
+    command
+        ->add_option("--layers", options->layers,
+                     "Comma-separated layers: fluid,grains,chains,outline,streamlines")
         ->capture_default_str();
     command->add_option("--field", options->field, "Fluid colouring: speed, pressure or vorticity")
         ->capture_default_str();
     command->add_option("--grain-color", options->grainColor, "Grain colouring: speed or force")
         ->capture_default_str();
-    command->add_option("--chain-threshold", options->chainThreshold,
-                        "Draw force chains above this multiple of the mean normal force")
-        ->capture_default_str()->check(CLI::NonNegativeNumber);
-    command->add_option("--fluid-range", options->fluidRange,
-                        "Fix the fluid colour range to MIN,MAX in the field's SI unit (default: each frame's)");
-    command->add_option("--grain-range", options->grainRange,
-                        "Fix the grain colour range to MIN,MAX in SI units (default: each frame's)");
+    command
+        ->add_option("--chain-threshold", options->chainThreshold,
+                     "Draw force chains above this multiple of the mean normal force")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    command->add_option(
+        "--fluid-range", options->fluidRange,
+        "Fix the fluid colour range to MIN,MAX in the field's SI unit (default: each frame's)");
+    command->add_option(
+        "--grain-range", options->grainRange,
+        "Fix the grain colour range to MIN,MAX in SI units (default: each frame's)");
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
     command->callback([options, &exitCode] {
         render(*options);

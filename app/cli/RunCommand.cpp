@@ -48,17 +48,20 @@ void applyThreads(const solver::CaseSpec& spec) {
 #endif
 }
 
-void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions& options, bool resumed) {
+void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions& options,
+           bool resumed) {
     const auto& spec = simulation.spec();
     if (spec.output.vtk && !sinksAvailable() && !options.quiet)
-        std::cerr << "warning: this build has no VTK (LBDEM_GUI=OFF): no VTU/VTI files are written\n";
+        std::cerr
+            << "warning: this build has no VTK (LBDEM_GUI=OFF): no VTU/VTI files are written\n";
     RunDriverOptions driverOptions{dir, options.quiet, options.untilTc, resumed};
     RunDriver driver(simulation, driverOptions);
     SinkOptions sinkOptions{spec.output.vtk, spec.output.vtk_every, options.renderEveryTc,
                             spec.run.output_interval_tc, resumed};
     // A resumed run writes again the frames after its checkpoint: the series keeps those before.
     if (resumed) sinkOptions.keep_until_s = simulation.time() + 0.5 * simulation.plan().dt_s;
-    for (auto& sink : makeRunSinks(dir.string(), sinkOptions)) driver.addSink(std::move(sink));
+    for (auto& sink : makeRunSinks(dir.string(), sinkOptions))
+        driver.addSink(std::move(sink));
     driver.addSink(makeProfileSink(dir.string()));
     driver.run();
     if (!options.quiet) std::cout << "outputs in " << dir.string() << "/\n";
@@ -66,8 +69,8 @@ void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions
 
 /// Build the Simulation of a case; a case that cannot be built (a packing that cannot reach its
 /// target, a column that does not fit) is bad input, named after where the case came from.
-std::unique_ptr<solver::Simulation> buildSimulation(const solver::CaseSpec& spec, const solver::Plan& plan,
-                                                    const std::string& source) {
+std::unique_ptr<solver::Simulation>
+buildSimulation(const solver::CaseSpec& spec, const solver::Plan& plan, const std::string& source) {
     try {
         return std::make_unique<solver::Simulation>(spec, plan);
     } catch (const solver::SimulationError& error) {
@@ -84,13 +87,14 @@ void runCase(const RunOptions& options) {
     refuseExistingRun(dir, options.force);
     checkResources(plan, dir, options.force, options.quiet);
     applyThreads(spec);
-    const auto simulation =
-        buildSimulation(spec, plan, options.caseOptions.path.empty() ? "the case" : options.caseOptions.path);
+    const auto simulation = buildSimulation(
+        spec, plan, options.caseOptions.path.empty() ? "the case" : options.caseOptions.path);
     prepareRunFolder(dir, options.force);
     io::writeCase(spec, (dir / "case.toml").string());
     io::writeFileAtomically((dir / "plan.json").string(), io::planToJson(plan).dump(2) + "\n");
     if (!options.quiet)
-        for (const auto& warning : plan.warnings) std::cerr << "warning: " << warning << "\n";
+        for (const auto& warning : plan.warnings)
+            std::cerr << "warning: " << warning << "\n";
     drive(*simulation, dir, options, false);
 }
 
@@ -98,26 +102,31 @@ void resumeCase(const RunOptions& options) {
     const fs::path dir = options.resumeDir;
     const fs::path checkpoint = dir / "checkpoint.h5";
     if (!fs::is_directory(dir))
-        throw solver::InputError(dir.string() + " is not a folder: lbdem resume takes the output folder of a run");
+        throw solver::InputError(dir.string() +
+                                 " is not a folder: lbdem resume takes the output folder of a run");
     if (!fs::exists(checkpoint))
         throw solver::InputError(
             checkpoint.string() + ": no checkpoint to resume from; " +
-            (holdsRun(dir) ? "the run was stopped before it wrote one (at t = 0); start it again with "
-                             "lbdem run CASE --out " + dir.string() + " --force"
-                           : "was the run started with lbdem run --out " + dir.string() + "?"));
+            (holdsRun(dir)
+                 ? "the run was stopped before it wrote one (at t = 0); start it again with "
+                   "lbdem run CASE --out " +
+                       dir.string() + " --force"
+                 : "was the run started with lbdem run --out " + dir.string() + "?"));
     const io::CheckpointData data = io::readCheckpoint(checkpoint.string());
-    const solver::CaseSpec spec = io::parseCase(data.case_toml, checkpoint.string() + " (case_toml)");
+    const solver::CaseSpec spec =
+        io::parseCase(data.case_toml, checkpoint.string() + " (case_toml)");
     const solver::Plan plan = solver::makePlan(spec);
     applyThreads(spec);
     const auto simulation = buildSimulation(spec, plan, checkpoint.string());
     try {
         simulation->restoreState(data.state);
     } catch (const std::exception& error) {
-        throw solver::InputError(checkpoint.string() + " does not match the case it holds: " + error.what());
+        throw solver::InputError(checkpoint.string() +
+                                 " does not match the case it holds: " + error.what());
     }
     if (!options.quiet)
-        std::cout << "resuming " << spec.name << " at t/tc = " << simulation->timeOverTc() << " (step "
-                  << simulation->stepIndex() << ")\n";
+        std::cout << "resuming " << spec.name << " at t/tc = " << simulation->timeOverTc()
+                  << " (step " << simulation->stepIndex() << ")\n";
     drive(*simulation, dir, options, true);
 }
 
@@ -125,27 +134,32 @@ void resumeCase(const RunOptions& options) {
 
 void addRunCommand(CLI::App& app, int& exitCode) {
     auto options = std::make_shared<RunOptions>();
-    auto* command = app.add_subcommand("run", "Run a case; writes the resolved case, the plan, "
-                                              "timeseries.csv, summary.json, VTK series and a checkpoint");
+    auto* command =
+        app.add_subcommand("run", "Run a case; writes the resolved case, the plan, "
+                                  "timeseries.csv, summary.json, VTK series and a checkpoint");
     options->caseOptions.addTo(*command);
     command->add_option("--out", options->out, "Output folder (default results/<case name>)");
-    command->add_option("--render-every", options->renderEveryTc,
-                        "Also render a PNG frame every X tau_c into OUT/frames/")
+    command
+        ->add_option("--render-every", options->renderEveryTc,
+                     "Also render a PNG frame every X tau_c into OUT/frames/")
         ->check(CLI::NonNegativeNumber);
     command->add_option("--until-tc", options->untilTc, "Stop at this t / tau_c (resume later)");
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
-    command->add_flag("--force", options->force,
-                      "Replace a run already in the output folder (its outputs are removed first), and run "
-                      "even when the plan's memory or outputs exceed this machine's memory or free disk");
+    command->add_flag(
+        "--force", options->force,
+        "Replace a run already in the output folder (its outputs are removed first), and run "
+        "even when the plan's memory or outputs exceed this machine's memory or free disk");
     command->callback([options, &exitCode] {
         runCase(*options);
         exitCode = kExitOk;
     });
 
     auto resumeOptions = std::make_shared<RunOptions>();
-    auto* resume = app.add_subcommand("resume", "Continue a run from DIR/checkpoint.h5, bit for bit");
+    auto* resume =
+        app.add_subcommand("resume", "Continue a run from DIR/checkpoint.h5, bit for bit");
     resume->add_option("dir", resumeOptions->resumeDir, "Output folder of the run")->required();
-    resume->add_option("--until-tc", resumeOptions->untilTc, "Stop at this t / tau_c instead of the case's end");
+    resume->add_option("--until-tc", resumeOptions->untilTc,
+                       "Stop at this t / tau_c instead of the case's end");
     resume->add_option("--render-every", resumeOptions->renderEveryTc, "PNG frame every X tau_c")
         ->check(CLI::NonNegativeNumber);
     resume->add_flag("--quiet", resumeOptions->quiet, "Print nothing but errors");

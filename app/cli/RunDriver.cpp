@@ -66,11 +66,14 @@ struct RunDriver::Progress {
 };
 
 RunDriver::RunDriver(solver::Simulation& simulation, RunDriverOptions options)
-    : m_simulation(simulation), m_options(std::move(options)), m_progress(std::make_unique<Progress>()) {}
+    : m_simulation(simulation), m_options(std::move(options)),
+      m_progress(std::make_unique<Progress>()) {}
 
 RunDriver::~RunDriver() = default;
 
-void RunDriver::addSink(std::unique_ptr<SnapshotSink> sink) { m_sinks.push_back(std::move(sink)); }
+void RunDriver::addSink(std::unique_ptr<SnapshotSink> sink) {
+    m_sinks.push_back(std::move(sink));
+}
 
 void RunDriver::writeOutput() {
     auto& p = *m_progress;
@@ -82,7 +85,8 @@ void RunDriver::writeOutput() {
     p.series->append(metrics);
     if (!m_sinks.empty()) {
         const auto snapshot = m_simulation.snapshot();
-        for (auto& sink : m_sinks) sink->write(*snapshot, p.outputIndex);
+        for (auto& sink : m_sinks)
+            sink->write(*snapshot, p.outputIndex);
     }
     ++p.outputIndex;
 }
@@ -92,7 +96,8 @@ void RunDriver::accountWork() {
     std::vector<double> stages;
     for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k)
         stages.push_back(m_simulation.timer().seconds(static_cast<solver::Stage>(k)));
-    m_simulation.runDiagnostics().setProcessWork(seconds(p.start), m_simulation.stepIndex() - p.firstStep, stages);
+    m_simulation.runDiagnostics().setProcessWork(seconds(p.start),
+                                                 m_simulation.stepIndex() - p.firstStep, stages);
 }
 
 void RunDriver::writeCheckpoint() {
@@ -115,8 +120,14 @@ void RunDriver::writeSummary(bool finished, const std::string& stopReason) {
         {"case", m_simulation.spec().name},
         {"finished", finished},
         {"scene", m_simulation.spec().scene},
-        {"plan", {{"h", plan.h_m}, {"dt", plan.dt_s}, {"tau", plan.tau}, {"mach", plan.mach},
-                  {"nx", plan.nx}, {"ny", plan.ny}, {"substeps", plan.substeps}}},
+        {"plan",
+         {{"h", plan.h_m},
+          {"dt", plan.dt_s},
+          {"tau", plan.tau},
+          {"mach", plan.mach},
+          {"nx", plan.nx},
+          {"ny", plan.ny},
+          {"substeps", plan.substeps}}},
         {"steps", m_simulation.stepIndex()},
         {"t_over_tc", m_simulation.timeOverTc()},
         {"wall_s", wallSeconds},
@@ -132,7 +143,8 @@ void RunDriver::writeSummary(bool finished, const std::string& stopReason) {
     summary["ke_peak"] = diagnostics.kePeak();
     summary["t_ke_peak_over_tc"] = diagnostics.tKePeakOverTc();
     // Where the time went, per stage of the step, over every process of the run (outputs are
-    // not counted). wall_s, mlups and stage_seconds are the only figures that depend on the machine.
+    // not counted). wall_s, mlups and stage_seconds are the only figures that depend on the
+    // machine.
     nlohmann::json stages = nlohmann::json::object();
     const auto stageSeconds = diagnostics.stageSeconds();
     for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k)
@@ -176,12 +188,16 @@ void RunDriver::startSeries(double outputInterval, double checkpointInterval) {
     const double now = m_simulation.time();
     // A resumed run has written every output time up to now (within half a step).
     p.outputIndex = m_options.resumed
-                        ? static_cast<long long>(std::floor((now + 0.5 * m_simulation.plan().dt_s) / outputInterval)) + 1
+                        ? static_cast<long long>(
+                              std::floor((now + 0.5 * m_simulation.plan().dt_s) / outputInterval)) +
+                              1
                         : 0;
     p.nextOutputS = m_options.resumed ? p.outputIndex * outputInterval : now;
     // A fresh run checkpoints at t = 0 too (after its first output), so that it can be resumed
     // whenever it is stopped.
-    p.nextCheckpointS = checkpointInterval <= 0 ? 1e300 : m_options.resumed ? now + checkpointInterval : now;
+    p.nextCheckpointS = checkpointInterval <= 0 ? 1e300
+                        : m_options.resumed     ? now + checkpointInterval
+                                                : now;
 }
 
 void RunDriver::run() {
@@ -196,8 +212,10 @@ void RunDriver::run() {
     // checkpoint, and its summary keeps the figures of the run that got it there.
     if (m_options.resumed && m_simulation.time() >= endS - halfStep) {
         if (!m_options.quiet)
-            std::cout << m_options.dir.string() << " is already at t/tc = " << m_simulation.timeOverTc()
-                      << " (asked for " << endS / plan.tc_s << "): nothing to run, its outputs are left as they are\n";
+            std::cout << m_options.dir.string()
+                      << " is already at t/tc = " << m_simulation.timeOverTc() << " (asked for "
+                      << endS / plan.tc_s
+                      << "): nothing to run, its outputs are left as they are\n";
         return;
     }
     startSeries(outputInterval, checkpointInterval);
@@ -230,7 +248,8 @@ void RunDriver::run() {
     }
     // The flows end between output times: record the final state too, so that summary.json's
     // "final" is the end of the run (not done at an --until-tc stop, to keep resumes aligned).
-    if (m_simulation.finished() && m_simulation.stepIndex() != m_simulation.runDiagnostics().lastOutputStep())
+    if (m_simulation.finished() &&
+        m_simulation.stepIndex() != m_simulation.runDiagnostics().lastOutputStep())
         writeOutput();
     writeCheckpoint();
     writeSummary(m_simulation.finished());

@@ -20,10 +20,10 @@ public:
 
 /// How a run is driven.
 struct RunDriverOptions {
-    std::filesystem::path dir;   ///< output folder (exists)
-    bool quiet = false;          ///< no progress lines
-    double until_tc = -1;        ///< stop at this t / tau_c instead of the case's end (if > 0)
-    bool resumed = false;        ///< continuing from DIR/checkpoint.h5: append, do not restart
+    std::filesystem::path dir; ///< output folder (exists)
+    bool quiet = false;        ///< no progress lines
+    double until_tc = -1;      ///< stop at this t / tau_c instead of the case's end (if > 0)
+    bool resumed = false;      ///< continuing from DIR/checkpoint.h5: append, do not restart
 };
 
 /// Steps a Simulation and writes timeseries.csv, summary.json, checkpoint.h5 and the snapshot

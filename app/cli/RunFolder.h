@@ -24,10 +24,12 @@ void prepareRunFolder(const std::filesystem::path& dir, bool force);
 /// Sentences about a plan that does not fit this machine: memory above its physical memory,
 /// outputs above the free space of the file system that holds dir (or its nearest existing
 /// parent). Empty when it fits.
-std::vector<std::string> resourceProblems(const solver::Plan& plan, const std::filesystem::path& dir);
+std::vector<std::string> resourceProblems(const solver::Plan& plan,
+                                          const std::filesystem::path& dir);
 
 /// Throw InputError with the first resource problem unless force (then warn on stderr).
-void checkResources(const solver::Plan& plan, const std::filesystem::path& dir, bool force, bool quiet);
+void checkResources(const solver::Plan& plan, const std::filesystem::path& dir, bool force,
+                    bool quiet);
 
 /// A byte count for people: "812 MiB", "26.1 GiB".
 std::string formatBytes(double bytes);

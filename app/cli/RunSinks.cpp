@@ -63,19 +63,22 @@ bool sinksAvailable() {
 #endif
 }
 
-std::vector<std::unique_ptr<SnapshotSink>> makeRunSinks(const std::string& dir, const SinkOptions& options) {
+std::vector<std::unique_ptr<SnapshotSink>> makeRunSinks(const std::string& dir,
+                                                        const SinkOptions& options) {
     std::vector<std::unique_ptr<SnapshotSink>> sinks;
 #ifdef LBDEM_HAS_VIS
     if (options.vtk)
-        sinks.push_back(std::make_unique<VtkSink>(dir, std::max(1, options.vtk_every), options.resumed,
-                                                  options.keep_until_s));
+        sinks.push_back(std::make_unique<VtkSink>(dir, std::max(1, options.vtk_every),
+                                                  options.resumed, options.keep_until_s));
     if (options.render_every_tc > 0) {
-        const int every = std::max(1, static_cast<int>(std::lround(options.render_every_tc / options.output_interval_tc)));
+        const int every = std::max(
+            1, static_cast<int>(std::lround(options.render_every_tc / options.output_interval_tc)));
         sinks.push_back(std::make_unique<PngSink>(dir, every));
     }
 #else
     if (options.render_every_tc > 0)
-        throw solver::InputError("--render-every needs a build with VTK (configure with LBDEM_GUI=ON)");
+        throw solver::InputError(
+            "--render-every needs a build with VTK (configure with LBDEM_GUI=ON)");
     (void)dir;
 #endif
     return sinks;

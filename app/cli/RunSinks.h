@@ -24,6 +24,7 @@ bool sinksAvailable();
 
 /// The sinks for a run into dir; throws InputError when PNG frames are asked of a build without
 /// VTK.
-std::vector<std::unique_ptr<SnapshotSink>> makeRunSinks(const std::string& dir, const SinkOptions& options);
+std::vector<std::unique_ptr<SnapshotSink>> makeRunSinks(const std::string& dir,
+                                                        const SinkOptions& options);
 
 } // namespace lbdem::cli

@@ -253,7 +253,8 @@ int runStudy(const StudyOptions& options) {
             planned[k].argv = {planned[k].argv.front(), "resume", dir.string(), "--quiet"};
             if (!options.quiet) std::cout << "resume  " << planned[k].label << "\n";
         } else {
-            if (holdsRun(dir)) planned[k].argv.push_back("--force"); // a start that failed: nothing to continue
+            if (holdsRun(dir))
+                planned[k].argv.push_back("--force"); // a start that failed: nothing to continue
             if (!options.quiet) std::cout << "run     " << planned[k].label << "\n";
         }
         jobs.push_back(planned[k]);

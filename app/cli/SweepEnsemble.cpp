@@ -3,8 +3,8 @@
 
 #include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
-#include "solver/scene/Plan.h"
 #include "solver/io/TimeSeriesWriter.h"
+#include "solver/scene/Plan.h"
 
 #include <nlohmann/json.hpp>
 
@@ -66,9 +66,13 @@ EnsembleRun readRun(const SweepEntry& entry) {
         return run;
     }
     const bool finished = summary.value("finished", false);
-    run.status = finished ? "finished" : summary.contains("stop_reason") ? "unstable" : "unfinished";
+    run.status = finished                          ? "finished"
+                 : summary.contains("stop_reason") ? "unstable"
+                                                   : "unfinished";
     if (!finished) return run;
-    auto set = [&](EnsembleMetric metric, double value) { run.values[static_cast<std::size_t>(metric)] = value; };
+    auto set = [&](EnsembleMetric metric, double value) {
+        run.values[static_cast<std::size_t>(metric)] = value;
+    };
     set(EnsembleMetric::RunoutFinal, numberIn(summary, "runout_final"));
     set(EnsembleMetric::KePeak, numberIn(summary, "ke_peak"));
     set(EnsembleMetric::TKePeak, numberIn(summary, "t_ke_peak_over_tc"));
@@ -97,7 +101,8 @@ std::string rangeCell(const Spread& s, const char* pattern) {
 
 std::vector<int> firstSeeds(int count) {
     std::vector<int> seeds;
-    for (int seed = 1; seed <= count; ++seed) seeds.push_back(seed);
+    for (int seed = 1; seed <= count; ++seed)
+        seeds.push_back(seed);
     return seeds;
 }
 
@@ -110,8 +115,9 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
         (void)solver::makePlan(spec); // the planner's refusals come before anything runs too
         const auto [first, fresh] = fileOfName.emplace(spec.name, casePath);
         if (!fresh)
-            throw solver::InputError(casePath + ": the case name '" + spec.name + "' is also that of " +
-                                     first->second + "; each case of a sweep needs its own name (it names "
+            throw solver::InputError(casePath + ": the case name '" + spec.name +
+                                     "' is also that of " + first->second +
+                                     "; each case of a sweep needs its own name (it names "
                                      "the output folder)");
         if (seeds.empty()) {
             runs.push_back({{spec, out / spec.name, 0}, casePath, sweep.overrides});
@@ -141,7 +147,8 @@ Spread spreadOf(const std::vector<double>& values) {
     double sum = 0;
     s.min = std::numeric_limits<double>::infinity(), s.max = -s.min;
     for (const double v : values)
-        if (std::isfinite(v)) ++s.count, sum += v, s.min = std::min(s.min, v), s.max = std::max(s.max, v);
+        if (std::isfinite(v))
+            ++s.count, sum += v, s.min = std::min(s.min, v), s.max = std::max(s.max, v);
     if (s.count == 0) return Spread{};
     s.mean = sum / s.count;
     double squares = 0;
@@ -175,8 +182,15 @@ std::vector<EnsembleCase> gatherEnsemble(const std::vector<SweepEntry>& entries)
     for (const auto& entry : entries) {
         const auto [at, fresh] = index.emplace(entry.spec.name, cases.size());
         if (fresh)
-            cases.push_back({entry.spec.name, entry.spec.grains.packing, entry.spec.domain.slope_deg,
-                             entry.spec.fluid.enabled, {}, 0, 0, 0, {}});
+            cases.push_back({entry.spec.name,
+                             entry.spec.grains.packing,
+                             entry.spec.domain.slope_deg,
+                             entry.spec.fluid.enabled,
+                             {},
+                             0,
+                             0,
+                             0,
+                             {}});
         auto& c = cases[at->second];
         c.runs.push_back(readRun(entry));
         c.finished += c.runs.back().status == "finished";
@@ -186,7 +200,8 @@ std::vector<EnsembleCase> gatherEnsemble(const std::vector<SweepEntry>& entries)
     for (auto& c : cases)
         for (std::size_t m = 0; m < kEnsembleMetrics; ++m) {
             std::vector<double> values;
-            for (const auto& run : c.runs) values.push_back(run.values[m]);
+            for (const auto& run : c.runs)
+                values.push_back(run.values[m]);
             c.spread[m] = spreadOf(values);
         }
     return cases;
@@ -201,7 +216,8 @@ std::string ensembleCsv(const std::vector<EnsembleCase>& cases) {
     for (const auto& c : cases) {
         csv += c.name + "," + number(c.packing, "%.2f") + "," + number(c.slope_deg, "%.1f") + "," +
                (c.submerged ? "submerged" : "dry") + "," + std::to_string(c.runs.size()) + "," +
-               std::to_string(c.finished) + "," + std::to_string(c.unstable) + "," + std::to_string(c.endReached);
+               std::to_string(c.finished) + "," + std::to_string(c.unstable) + "," +
+               std::to_string(c.endReached);
         for (const auto& s : c.spread)
             for (const double v : {s.mean, s.sd, s.min, s.max})
                 csv += "," + (s.count ? number(v, "%.6g") : "");
@@ -218,10 +234,11 @@ std::string ensembleMarkdown(const std::vector<EnsembleCase>& cases) {
         rule += "---|---|";
     }
     md += "\n" + rule + "\n";
-    const char* patterns[kEnsembleMetrics] = {"%.3f", "%.4f", "%.2f", "%.3f", "%.3f", "%.3f", "%.0f"};
+    const char* patterns[kEnsembleMetrics] = {"%.3f", "%.4f", "%.2f", "%.3f",
+                                              "%.3f", "%.3f", "%.0f"};
     for (const auto& c : cases) {
-        md += "| " + c.name + " | " + std::to_string(c.runs.size()) + " | " + std::to_string(c.finished) + " | " +
-              std::to_string(c.unstable) + " |";
+        md += "| " + c.name + " | " + std::to_string(c.runs.size()) + " | " +
+              std::to_string(c.finished) + " | " + std::to_string(c.unstable) + " |";
         for (std::size_t m = 0; m < kEnsembleMetrics; ++m) {
             std::string mean = meanCell(c.spread[m], patterns[m]);
             if (m == 0 && c.endReached > 0) mean += " (end: " + std::to_string(c.endReached) + ")";

@@ -32,13 +32,13 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
 
 /// The figures compared over seeds, in table order.
 enum class EnsembleMetric : std::size_t {
-    RunoutFinal,   ///< (L_f - L_i)/L_i at the end of the run
-    KePeak,        ///< peak E_k/E_p0
-    TKePeak,       ///< t/tau_c of that peak
-    RunoutAt3Tc,   ///< (L - L_i)/L_i at t = 3 tau_c
-    FroudeAt3Tc,   ///< densimetric Froude number of the front at 3 tau_c (submerged cases)
-    PackingFinal,  ///< packing fraction at the end
-    PoreAt1Tc,     ///< excess pore pressure on the failure plane at 1 tau_c [Pa] (submerged cases)
+    RunoutFinal,  ///< (L_f - L_i)/L_i at the end of the run
+    KePeak,       ///< peak E_k/E_p0
+    TKePeak,      ///< t/tau_c of that peak
+    RunoutAt3Tc,  ///< (L - L_i)/L_i at t = 3 tau_c
+    FroudeAt3Tc,  ///< densimetric Froude number of the front at 3 tau_c (submerged cases)
+    PackingFinal, ///< packing fraction at the end
+    PoreAt1Tc,    ///< excess pore pressure on the failure plane at 1 tau_c [Pa] (submerged cases)
     Count
 };
 constexpr std::size_t kEnsembleMetrics = static_cast<std::size_t>(EnsembleMetric::Count);
@@ -57,7 +57,8 @@ Spread spreadOf(const std::vector<double>& values);
 /// What one run of an ensemble left on disk.
 struct EnsembleRun {
     int seed = 0;
-    std::string status; ///< finished, unstable (stopped by the stability guard), unfinished, missing, unreadable
+    std::string status; ///< finished, unstable (stopped by the stability guard), unfinished,
+                        ///< missing, unreadable
     std::array<double, kEnsembleMetrics> values{}; ///< NaN where the run has no value
     bool endReached = false; ///< its front reached the domain's end: the runout is a lower bound
 };
@@ -72,7 +73,8 @@ struct EnsembleCase {
     std::array<Spread, kEnsembleMetrics> spread{};
 };
 
-/// y at x = at, linear between the points (x increasing); NaN outside them or where y is not finite.
+/// y at x = at, linear between the points (x increasing); NaN outside them or where y is not
+/// finite.
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at);
 
 /// The value of a column of timeseries.csv at t/tau_c = tc, linear between rows; NaN when the

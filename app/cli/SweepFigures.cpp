@@ -30,9 +30,10 @@ constexpr int kWidth = 900, kHeight = 600;
 /// One finished case with its time series: one run, or the finished runs of an ensemble (one
 /// per packing seed) drawn as their mean and a band.
 struct CaseCurves {
-    const SweepFigureCase* run = nullptr; ///< the first run (what the runs share: packing, slope, medium)
+    const SweepFigureCase* run =
+        nullptr; ///< the first run (what the runs share: packing, slope, medium)
     std::vector<io::TimeSeriesTable> tables;
-    std::vector<double> runouts;          ///< each run's final runout
+    std::vector<double> runouts; ///< each run's final runout
 };
 
 /// One number formatted with a printf pattern.
@@ -55,12 +56,15 @@ vis::ChartSeries curve(const CaseCurves& c, const std::string& column, std::stri
     series.name = std::move(name);
     const auto t = c.tables.front().column("t_over_tc");
     std::vector<std::vector<double>> times, values;
-    for (const auto& table : c.tables) times.push_back(table.column("t_over_tc")), values.push_back(table.column(column));
+    for (const auto& table : c.tables)
+        times.push_back(table.column("t_over_tc")), values.push_back(table.column(column));
     for (const double at : t) {
         std::vector<double> ys;
-        for (std::size_t r = 0; r < c.tables.size(); ++r) ys.push_back(interpolate(times[r], values[r], at));
+        for (std::size_t r = 0; r < c.tables.size(); ++r)
+            ys.push_back(interpolate(times[r], values[r], at));
         const Spread spread = spreadOf(ys);
-        if (!std::isfinite(at) || spread.count < static_cast<int>(ys.size()) || ys.empty()) continue;
+        if (!std::isfinite(at) || spread.count < static_cast<int>(ys.size()) || ys.empty())
+            continue;
         series.x.push_back(at), series.y.push_back(spread.mean);
         if (ys.size() > 1) series.low.push_back(spread.min), series.high.push_back(spread.max);
     }
@@ -71,9 +75,11 @@ vis::ChartSeries curve(const CaseCurves& c, const std::string& column, std::stri
 /// seeds, line: mean"; empty otherwise.
 std::string bandLegend(const std::vector<CaseCurves>& cases) {
     std::size_t fewest = 1000000, most = 0;
-    for (const auto& c : cases) fewest = std::min(fewest, c.tables.size()), most = std::max(most, c.tables.size());
+    for (const auto& c : cases)
+        fewest = std::min(fewest, c.tables.size()), most = std::max(most, c.tables.size());
     if (most < 2) return "";
-    const std::string count = fewest == most ? std::to_string(most) : std::to_string(fewest) + "-" + std::to_string(most);
+    const std::string count =
+        fewest == most ? std::to_string(most) : std::to_string(fewest) + "-" + std::to_string(most);
     return "shaded: min-max of " + count + " seeds, line: mean";
 }
 
@@ -226,14 +232,16 @@ SweepFiguresResult writeSweepFigures(const std::string& sweepName,
 #ifdef LBDEM_HAS_VIS
     std::vector<CaseCurves> curves; // the runs of one case (its packing seeds) together
     for (const auto& run : cases) {
-        const std::string folder = run.dir.filename().string(); // the case, or the case and its seed
+        const std::string folder =
+            run.dir.filename().string(); // the case, or the case and its seed
         if (run.status != "finished") {
             result.skipped.push_back(folder + " (" + run.status + ")");
             continue;
         }
         try {
             auto table = io::readTimeSeries((run.dir / "timeseries.csv").string());
-            auto same = std::find_if(curves.begin(), curves.end(), [&](const CaseCurves& c) { return c.run->name == run.name; });
+            auto same = std::find_if(curves.begin(), curves.end(),
+                                     [&](const CaseCurves& c) { return c.run->name == run.name; });
             if (same == curves.end()) same = curves.insert(curves.end(), CaseCurves{&run, {}, {}});
             same->tables.push_back(std::move(table));
             same->runouts.push_back(run.runout_final);
@@ -258,7 +266,8 @@ SweepFiguresResult writeSweepFigures(const std::string& sweepName,
             std::vector<const CaseCurves*> ofPacking;
             for (const auto& c : curves)
                 if (format("%.2f", c.run->packing) == it->first) ofPacking.push_back(&c);
-            drawPackingFigures(sweepName, it->first, it->second, ofPacking, colours, band, out, result);
+            drawPackingFigures(sweepName, it->first, it->second, ofPacking, colours, band, out,
+                               result);
         }
         drawRunoutVsSlope(sweepName, curves, labels, band, out, result);
         drawFroude(sweepName, curves, labels, colours, band, out, result);

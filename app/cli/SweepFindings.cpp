@@ -29,7 +29,8 @@ PairTest exceeds(EnsembleMetric metric, bool runoutBounds = false) {
         const double va = valueOf(a, metric), vb = valueOf(b, metric);
         if (!std::isfinite(va) || !std::isfinite(vb)) return Outcome::None;
         const bool holds = va > vb;
-        if (runoutBounds && ((holds && b.endReached) || (!holds && a.endReached))) return Outcome::Undecided;
+        if (runoutBounds && ((holds && b.endReached) || (!holds && a.endReached)))
+            return Outcome::Undecided;
         return holds ? Outcome::Holds : Outcome::Fails;
     };
 }
@@ -66,11 +67,14 @@ const EnsembleRun* finishedRun(const EnsembleCase& c, int seed) {
 class CaseIndex {
 public:
     explicit CaseIndex(const std::vector<EnsembleCase>& cases) : m_cases(cases) {
-        for (const auto& c : cases) m_slopes.insert(c.slope_deg);
+        for (const auto& c : cases)
+            m_slopes.insert(c.slope_deg);
     }
     const EnsembleCase* find(const std::string& packing, double slope, bool submerged) const {
         for (const auto& c : m_cases)
-            if (packingName(c.packing) == packing && c.slope_deg == slope && c.submerged == submerged) return &c;
+            if (packingName(c.packing) == packing && c.slope_deg == slope &&
+                c.submerged == submerged)
+                return &c;
         return nullptr;
     }
     const std::set<double>& slopes() const { return m_slopes; }
@@ -87,8 +91,8 @@ struct Kind {
 };
 
 /// A finding that compares case a with case b at each slope, seed by seed.
-void atEachSlope(const CaseIndex& index, const std::string& statement, Kind a, Kind b, const PairTest& test,
-                 std::vector<Finding>& findings) {
+void atEachSlope(const CaseIndex& index, const std::string& statement, Kind a, Kind b,
+                 const PairTest& test, std::vector<Finding>& findings) {
     for (const double slope : index.slopes()) {
         const auto* ca = index.find(a.packing, slope, a.submerged);
         const auto* cb = index.find(b.packing, slope, b.submerged);
@@ -108,7 +112,8 @@ void growsWithSlope(const CaseIndex& index, Kind kind, std::vector<Finding>& fin
     for (const double slope : index.slopes())
         if (const auto* c = index.find(kind.packing, slope, kind.submerged)) bySlope.push_back(c);
     if (bySlope.size() < 2) return;
-    const std::string where = slopeText(bySlope.front()->slope_deg) + " to " + slopeText(bySlope.back()->slope_deg);
+    const std::string where =
+        slopeText(bySlope.front()->slope_deg) + " to " + slopeText(bySlope.back()->slope_deg);
     Finding finding{std::string(kind.packing) + (kind.submerged ? ", submerged" : ", dry") +
                         ": runout grows with slope",
                     where};
@@ -131,8 +136,9 @@ void growsWithSlope(const CaseIndex& index, Kind kind, std::vector<Finding>& fin
 }
 
 /// A finding that one kind's metric lies above (or below) a threshold at each slope, seed by seed.
-void thresholdAtEachSlope(const CaseIndex& index, const std::string& statement, Kind kind, EnsembleMetric metric,
-                          double threshold, bool above, std::vector<Finding>& findings) {
+void thresholdAtEachSlope(const CaseIndex& index, const std::string& statement, Kind kind,
+                          EnsembleMetric metric, double threshold, bool above,
+                          std::vector<Finding>& findings) {
     for (const double slope : index.slopes()) {
         const auto* c = index.find(kind.packing, slope, kind.submerged);
         if (!c) continue;
@@ -140,7 +146,8 @@ void thresholdAtEachSlope(const CaseIndex& index, const std::string& statement, 
         for (const auto& run : c->runs) {
             const double value = valueOf(run, metric);
             if (run.status == "finished" && std::isfinite(value))
-                tally(finding, (above ? value > threshold : value < threshold) ? Outcome::Holds : Outcome::Fails);
+                tally(finding, (above ? value > threshold : value < threshold) ? Outcome::Holds
+                                                                               : Outcome::Fails);
         }
         if (finding.seeds() > 0) findings.push_back(finding);
     }
@@ -160,12 +167,17 @@ std::string inWords(const Finding& f) {
 std::vector<Finding> computeFindings(const std::vector<EnsembleCase>& cases) {
     const CaseIndex index(cases);
     std::vector<Finding> findings;
-    const Kind denseDry{"dense", false}, denseWet{"dense", true}, looseDry{"loose", false}, looseWet{"loose", true};
+    const Kind denseDry{"dense", false}, denseWet{"dense", true}, looseDry{"loose", false},
+        looseWet{"loose", true};
     const auto runout = exceeds(EnsembleMetric::RunoutFinal, true);
-    atEachSlope(index, "dense: dry runout longer than submerged", denseDry, denseWet, runout, findings);
-    atEachSlope(index, "loose: submerged runout longer than dry", looseWet, looseDry, runout, findings);
-    atEachSlope(index, "submerged: loose runout longer than dense", looseWet, denseWet, runout, findings);
-    for (const Kind kind : {denseDry, denseWet, looseDry, looseWet}) growsWithSlope(index, kind, findings);
+    atEachSlope(index, "dense: dry runout longer than submerged", denseDry, denseWet, runout,
+                findings);
+    atEachSlope(index, "loose: submerged runout longer than dry", looseWet, looseDry, runout,
+                findings);
+    atEachSlope(index, "submerged: loose runout longer than dense", looseWet, denseWet, runout,
+                findings);
+    for (const Kind kind : {denseDry, denseWet, looseDry, looseWet})
+        growsWithSlope(index, kind, findings);
     for (const Kind dry : {denseDry, looseDry}) {
         const Kind wet{dry.packing, true};
         const std::string name = dry.packing;
@@ -175,45 +187,54 @@ std::vector<Finding> computeFindings(const std::vector<EnsembleCase>& cases) {
                     exceeds(EnsembleMetric::TKePeak), findings);
     }
     // Hydroplaning of the front sets in above Fr of about 0.3-0.4 (Mohrig et al. 1998).
-    thresholdAtEachSlope(index, "loose, submerged: Fr_d at 3 tau_c above 0.4", looseWet, EnsembleMetric::FroudeAt3Tc,
-                         0.4, true, findings);
+    thresholdAtEachSlope(index, "loose, submerged: Fr_d at 3 tau_c above 0.4", looseWet,
+                         EnsembleMetric::FroudeAt3Tc, 0.4, true, findings);
     atEachSlope(index, "submerged: loose Fr_d at 3 tau_c above dense", looseWet, denseWet,
                 exceeds(EnsembleMetric::FroudeAt3Tc), findings);
     atEachSlope(index, "submerged: loose front further than dense at 3 tau_c", looseWet, denseWet,
                 exceeds(EnsembleMetric::RunoutAt3Tc), findings);
     // Dense columns dilate as they fail (suction), loose ones contract (excess pressure).
-    thresholdAtEachSlope(index, "dense, submerged: pore pressure on the failure plane negative at 1 tau_c", denseWet,
-                         EnsembleMetric::PoreAt1Tc, 0.0, false, findings);
-    thresholdAtEachSlope(index, "loose, submerged: pore pressure on the failure plane positive at 1 tau_c", looseWet,
-                         EnsembleMetric::PoreAt1Tc, 0.0, true, findings);
+    thresholdAtEachSlope(index,
+                         "dense, submerged: pore pressure on the failure plane negative at 1 tau_c",
+                         denseWet, EnsembleMetric::PoreAt1Tc, 0.0, false, findings);
+    thresholdAtEachSlope(index,
+                         "loose, submerged: pore pressure on the failure plane positive at 1 tau_c",
+                         looseWet, EnsembleMetric::PoreAt1Tc, 0.0, true, findings);
     for (const bool submerged : {false, true})
         atEachSlope(index,
-                    std::string(submerged ? "submerged" : "dry") + ": dense and loose end within 0.01 in packing",
-                    {"dense", submerged}, {"loose", submerged}, within(EnsembleMetric::PackingFinal, 0.01),
-                    findings);
+                    std::string(submerged ? "submerged" : "dry") +
+                        ": dense and loose end within 0.01 in packing",
+                    {"dense", submerged}, {"loose", submerged},
+                    within(EnsembleMetric::PackingFinal, 0.01), findings);
     return findings;
 }
 
 std::string findingsCsv(const std::vector<Finding>& findings) {
     std::string csv = "finding,where,holds,fails,undecided,seeds\n";
     for (const auto& f : findings)
-        csv += "\"" + f.statement + "\"," + f.where + "," + std::to_string(f.holds) + "," + std::to_string(f.fails) +
-               "," + std::to_string(f.undecided) + "," + std::to_string(f.seeds()) + "\n";
+        csv += "\"" + f.statement + "\"," + f.where + "," + std::to_string(f.holds) + "," +
+               std::to_string(f.fails) + "," + std::to_string(f.undecided) + "," +
+               std::to_string(f.seeds()) + "\n";
     return csv;
 }
 
 std::string findingsMarkdown(const std::vector<Finding>& findings) {
-    if (findings.empty()) return "No finding of the paper can be checked with the cases of this sweep.\n";
-    std::string md = "Each finding is checked seed by seed, between runs of the same packing seed that both "
-                     "finished.\n\n| finding | slope | seeds |\n|---|---|---|\n";
-    for (const auto& f : findings) md += "| " + f.statement + " | " + f.where + " | " + inWords(f) + " |\n";
+    if (findings.empty())
+        return "No finding of the paper can be checked with the cases of this sweep.\n";
+    std::string md =
+        "Each finding is checked seed by seed, between runs of the same packing seed that both "
+        "finished.\n\n| finding | slope | seeds |\n|---|---|---|\n";
+    for (const auto& f : findings)
+        md += "| " + f.statement + " | " + f.where + " | " + inWords(f) + " |\n";
     return md;
 }
 
-SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries, const std::filesystem::path& out) {
+SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries,
+                                        const std::filesystem::path& out) {
     SweepEnsembleReport report;
     bool ensemble = false;
-    for (const auto& entry : entries) ensemble = ensemble || entry.seed > 0;
+    for (const auto& entry : entries)
+        ensemble = ensemble || entry.seed > 0;
     if (!ensemble) return report;
     const auto cases = gatherEnsemble(entries);
     const auto findings = computeFindings(cases);
@@ -221,11 +242,12 @@ SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries, 
     io::writeFileAtomically((out / "sweep.csv").string(), report.csv);
     io::writeFileAtomically((out / "findings.csv").string(), findingsCsv(findings));
     report.files = {(out / "sweep.csv").string(), (out / "findings.csv").string()};
-    report.markdown = "## Ensemble over packing seeds\n\nEach case over its seeds, from the runs that finished: "
-                      "mean ± sample standard deviation, and min–max. \"(end: k)\": k fronts reached the "
-                      "domain's end, so their runouts are lower bounds.\n\n" +
-                      ensembleMarkdown(cases) + "\n## Findings\n\n" + findingsMarkdown(findings) +
-                      "\n## Runs\n\n";
+    report.markdown =
+        "## Ensemble over packing seeds\n\nEach case over its seeds, from the runs that finished: "
+        "mean ± sample standard deviation, and min–max. \"(end: k)\": k fronts reached the "
+        "domain's end, so their runouts are lower bounds.\n\n" +
+        ensembleMarkdown(cases) + "\n## Findings\n\n" + findingsMarkdown(findings) +
+        "\n## Runs\n\n";
     return report;
 }
 

@@ -16,7 +16,8 @@ struct Finding {
     std::string where;     ///< "5 deg", or "0-7.5 deg" for a finding over the slopes
     int holds = 0;         ///< seeds for which it holds
     int fails = 0;         ///< seeds for which it does not
-    int undecided = 0;     ///< seeds where a front at the domain's end leaves the runout a lower bound that decides nothing
+    int undecided = 0; ///< seeds where a front at the domain's end leaves the runout a lower bound
+                       ///< that decides nothing
     int seeds() const { return holds + fails + undecided; }
 };
 
@@ -38,6 +39,7 @@ struct SweepEnsembleReport {
 
 /// When entries hold ensemble runs (a seed each): writes OUT/sweep.csv (spread per case) and
 /// OUT/findings.csv, and returns the Markdown of both.
-SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries, const std::filesystem::path& out);
+SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries,
+                                        const std::filesystem::path& out);
 
 } // namespace lbdem::cli

@@ -48,7 +48,9 @@ void SweepProgress::finished(std::size_t index, double wall_s) {
     c.nowTc = c.endTc;
 }
 
-bool SweepProgress::timed(const Case& c) { return c.wall_s >= kPaceAfterS && c.nowTc > c.startTc; }
+bool SweepProgress::timed(const Case& c) {
+    return c.wall_s >= kPaceAfterS && c.nowTc > c.startTc;
+}
 
 double SweepProgress::paceOfKind(bool fluid) const {
     double advanced = 0, wall = 0;
@@ -66,9 +68,11 @@ std::string SweepProgress::line(const std::vector<RunningJob>& running) {
         c.wall_s = job.wall_s;
         c.nowTc = std::max(c.nowTc, runProgressTc(c.dir));
     }
-    const int done = m_skipped + static_cast<int>(std::count_if(m_cases.begin(), m_cases.end(),
-                                                                [](const Case& c) { return c.done; }));
-    std::string text = std::to_string(done) + "/" + std::to_string(m_skipped + static_cast<int>(m_cases.size())) + " done";
+    const int done =
+        m_skipped + static_cast<int>(std::count_if(m_cases.begin(), m_cases.end(),
+                                                   [](const Case& c) { return c.done; }));
+    std::string text = std::to_string(done) + "/" +
+                       std::to_string(m_skipped + static_cast<int>(m_cases.size())) + " done";
     double left = 0, longestRunning = 0;
     int untimed = 0; // cases of a kind none of which has run long enough to show its pace
     std::vector<bool> isRunning(m_cases.size(), false);
@@ -76,8 +80,8 @@ std::string SweepProgress::line(const std::vector<RunningJob>& running) {
         const auto& c = m_cases.at(running[k].index);
         isRunning[running[k].index] = true;
         char part[160];
-        std::snprintf(part, sizeof part, "%s %s t/tc %.2f/%.3g", k == 0 ? "; running" : ",", c.name.c_str(), c.nowTc,
-                      c.endTc);
+        std::snprintf(part, sizeof part, "%s %s t/tc %.2f/%.3g", k == 0 ? "; running" : ",",
+                      c.name.c_str(), c.nowTc, c.endTc);
         text += part;
         const double pace = timed(c) ? (c.nowTc - c.startTc) / c.wall_s : paceOfKind(c.fluid);
         if (pace <= 0) {
@@ -99,7 +103,8 @@ std::string SweepProgress::line(const std::vector<RunningJob>& running) {
         left += std::max(0.0, c.endTc - c.startTc) / pace;
     }
     // The work left spread over the job slots, but never sooner than the longest running case.
-    if (left <= 0 && untimed > 0) return text + "; ETA once a case has run " + formatDuration(kPaceAfterS);
+    if (left <= 0 && untimed > 0)
+        return text + "; ETA once a case has run " + formatDuration(kPaceAfterS);
     text += "; ETA " + formatDuration(std::max(longestRunning, left / m_maxParallel));
     if (untimed > 0) text += " + " + std::to_string(untimed) + " case(s) not timed yet";
     return text;

@@ -36,12 +36,13 @@ private:
         double startTc = 0; ///< t/tau_c when the sweep began (a resumed case starts part way)
         double endTc = 0;
         bool done = false;
-        double wall_s = 0;  ///< wall time so far, or in all once done
-        double nowTc = 0;   ///< t/tau_c at the last look
+        double wall_s = 0; ///< wall time so far, or in all once done
+        double nowTc = 0;  ///< t/tau_c at the last look
     };
     /// Whether the case has run long enough (past its start-up) for its pace to count.
     static bool timed(const Case& c);
-    double paceOfKind(bool fluid) const; ///< t/tau_c per wall second over the timed cases; 0 if none
+    double
+    paceOfKind(bool fluid) const; ///< t/tau_c per wall second over the timed cases; 0 if none
 
     std::vector<Case> m_cases;
     int m_maxParallel;

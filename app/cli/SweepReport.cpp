@@ -20,7 +20,8 @@ namespace {
 
 struct Row {
     std::string name, packing, slope, medium, status, error;
-    double runout = 0, endReachedTc = std::numeric_limits<double>::quiet_NaN(), kePeak = 0, tKePeak = 0, packingFinal = 0, wall = 0, mlups = 0;
+    double runout = 0, endReachedTc = std::numeric_limits<double>::quiet_NaN(), kePeak = 0,
+           tKePeak = 0, packingFinal = 0, wall = 0, mlups = 0;
     SweepFigureCase figure; ///< what the figures need of this case
 };
 
@@ -38,7 +39,8 @@ double numberOr(const nlohmann::json& json, const char* key) {
 } // namespace
 
 double endReachedTc(const SweepEntry& entry) {
-    const double limit = entry.spec.domain.width_m - entry.spec.grains.size_ratio * entry.spec.grains.d_min_m;
+    const double limit =
+        entry.spec.domain.width_m - entry.spec.grains.size_ratio * entry.spec.grains.d_min_m;
     try {
         const auto series = io::readTimeSeries((entry.dir / "timeseries.csv").string());
         const auto time = series.column("t_over_tc"), front = series.column("runout_m");
@@ -57,8 +59,13 @@ Row readRow(const SweepEntry& entry) {
     row.packing = number(entry.spec.grains.packing, "%.2f");
     row.slope = number(entry.spec.domain.slope_deg, "%.1f");
     row.medium = entry.spec.fluid.enabled ? "submerged" : "dry";
-    row.figure = {entry.spec.name, entry.spec.grains.packing, entry.spec.domain.slope_deg,
-                  entry.spec.fluid.enabled, "", 0.0, entry.dir};
+    row.figure = {entry.spec.name,
+                  entry.spec.grains.packing,
+                  entry.spec.domain.slope_deg,
+                  entry.spec.fluid.enabled,
+                  "",
+                  0.0,
+                  entry.dir};
     std::ifstream file(entry.dir / "summary.json");
     if (!file) {
         // No summary: the run failed before its first output (its log says why) or never ran.
@@ -95,14 +102,17 @@ std::string figuresSection(const SweepFiguresResult& figures, const std::filesys
     }
     if (!figures.skipped.empty()) {
         md += "Not in the figures:";
-        for (std::size_t k = 0; k < figures.skipped.size(); ++k) md += (k ? ", " : " ") + figures.skipped[k];
+        for (std::size_t k = 0; k < figures.skipped.size(); ++k)
+            md += (k ? ", " : " ") + figures.skipped[k];
         md += ".\n";
     }
     return md;
 }
 
 /// The figures of a row for the table; blank (CSV) or a dash (Markdown) when the run left none.
-bool hasFigures(const Row& row) { return row.status != "missing" && row.status != "failed" && row.status != "unreadable"; }
+bool hasFigures(const Row& row) {
+    return row.status != "missing" && row.status != "failed" && row.status != "unreadable";
+}
 
 /// The cases that failed, each with the first error line of its log.
 std::string failuresSection(const std::vector<Row>& rows) {
@@ -127,42 +137,49 @@ std::string firstErrorLine(const std::filesystem::path& logPath) {
 SweepReportResult writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
                                    const std::filesystem::path& out) {
     std::vector<Row> rows;
-    for (const auto& entry : entries) rows.push_back(readRow(entry));
+    for (const auto& entry : entries)
+        rows.push_back(readRow(entry));
     std::string csv = "case,packing,slope_deg,medium,status,runout_final,end_reached_tc,ke_peak,"
                       "t_ke_peak_over_tc,packing_final,wall_s,mlups\n";
     const SweepEnsembleReport ensemble = sweepEnsembleReport(entries, out);
-    std::string md = "# Sweep " + name + "\n\n" + ensemble.markdown + "| case | packing | slope (deg) | medium | status | "
-                     "(L_f - L_i)/L_i | front at the domain's end (t/tau_c) | peak E_k/E_p0 | t_peak/tau_c | "
-                     "final packing | wall (s) | MLUPS |\n"
-                     "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::string md =
+        "# Sweep " + name + "\n\n" + ensemble.markdown +
+        "| case | packing | slope (deg) | medium | status | "
+        "(L_f - L_i)/L_i | front at the domain's end (t/tau_c) | peak E_k/E_p0 | t_peak/tau_c | "
+        "final packing | wall (s) | MLUPS |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& r : rows) {
         const bool reached = std::isfinite(r.endReachedTc);
         if (!hasFigures(r)) {
-            csv += r.name + "," + r.packing + "," + r.slope + "," + r.medium + "," + r.status + ",,,,,,,\n";
-            md += "| " + r.name + " | " + r.packing + " | " + r.slope + " | " + r.medium + " | " + r.status +
-                  " | - | - | - | - | - | - | - |\n";
+            csv += r.name + "," + r.packing + "," + r.slope + "," + r.medium + "," + r.status +
+                   ",,,,,,,\n";
+            md += "| " + r.name + " | " + r.packing + " | " + r.slope + " | " + r.medium + " | " +
+                  r.status + " | - | - | - | - | - | - | - |\n";
             continue;
         }
         csv += r.name + "," + r.packing + "," + r.slope + "," + r.medium + "," + r.status + "," +
-               number(r.runout, "%.6g") + "," + (reached ? number(r.endReachedTc, "%.6g") : "") + "," +
-               number(r.kePeak, "%.6g") + "," + number(r.tKePeak, "%.6g") +
-               "," + number(r.packingFinal, "%.6g") + "," + number(r.wall, "%.1f") + "," +
+               number(r.runout, "%.6g") + "," + (reached ? number(r.endReachedTc, "%.6g") : "") +
+               "," + number(r.kePeak, "%.6g") + "," + number(r.tKePeak, "%.6g") + "," +
+               number(r.packingFinal, "%.6g") + "," + number(r.wall, "%.1f") + "," +
                number(r.mlups, "%.1f") + "\n";
-        md += "| " + r.name + " | " + r.packing + " | " + r.slope + " | " + r.medium + " | " + r.status +
-              " | " + number(r.runout, "%.3f") + (reached ? " (end)" : "") + " | " +
-              (reached ? number(r.endReachedTc, "%.2f") : "never") + " | " + number(r.kePeak, "%.4f") + " | " +
-              number(r.tKePeak, "%.2f") + " | " + number(r.packingFinal, "%.3f") + " | " +
-              number(r.wall, "%.0f") + " | " + number(r.mlups, "%.0f") + " |\n";
+        md += "| " + r.name + " | " + r.packing + " | " + r.slope + " | " + r.medium + " | " +
+              r.status + " | " + number(r.runout, "%.3f") + (reached ? " (end)" : "") + " | " +
+              (reached ? number(r.endReachedTc, "%.2f") : "never") + " | " +
+              number(r.kePeak, "%.4f") + " | " + number(r.tKePeak, "%.2f") + " | " +
+              number(r.packingFinal, "%.3f") + " | " + number(r.wall, "%.0f") + " | " +
+              number(r.mlups, "%.0f") + " |\n";
     }
     std::vector<SweepFigureCase> figureCases;
-    for (const auto& r : rows) figureCases.push_back(r.figure);
+    for (const auto& r : rows)
+        figureCases.push_back(r.figure);
     const SweepFiguresResult figures = writeSweepFigures(name, figureCases, out);
     md += failuresSection(rows);
     md += figuresSection(figures, out);
     const std::string runsCsv = ensemble.csv.empty() ? "sweep.csv" : "runs.csv";
     io::writeFileAtomically((out / runsCsv).string(), csv);
     io::writeFileAtomically((out / "sweep.md").string(), md);
-    SweepReportResult result{{(out / runsCsv).string(), (out / "sweep.md").string()}, figures.unavailable};
+    SweepReportResult result{{(out / runsCsv).string(), (out / "sweep.md").string()},
+                             figures.unavailable};
     result.files.insert(result.files.end(), ensemble.files.begin(), ensemble.files.end());
     result.files.insert(result.files.end(), figures.files.begin(), figures.files.end());
     return result;

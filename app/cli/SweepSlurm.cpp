@@ -21,7 +21,8 @@ namespace {
 /// text in single quotes for bash (a quote inside becomes '\'').
 std::string quoted(const std::string& text) {
     std::string result = "'";
-    for (const char c : text) result += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    for (const char c : text)
+        result += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return result + "'";
 }
 
@@ -42,19 +43,23 @@ std::pair<std::string, int> capture(const std::string& command) {
     FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
     if (!pipe) return {"cannot start: " + command, -1};
     char buffer[512];
-    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    while (std::fgets(buffer, sizeof buffer, pipe))
+        output += buffer;
     const int status = ::pclose(pipe);
     return {output, WIFEXITED(status) ? WEXITSTATUS(status) : -1};
 }
 
 /// The #SBATCH header of the job array.
-std::string header(const std::string& sweepName, std::size_t tasks, const fs::path& out, const SlurmOptions& options) {
+std::string header(const std::string& sweepName, std::size_t tasks, const fs::path& out,
+                   const SlurmOptions& options) {
     std::string text = "#!/bin/bash\n";
     text += "#SBATCH --job-name=" + quoted("lbdem-" + sweepName) + "\n";
     text += "#SBATCH --array=0-" + std::to_string(tasks - 1) + "\n";
     text += "#SBATCH --output=" + quoted((out / "slurm" / "task_%a.out").string()) + "\n";
-    text += "#SBATCH --ntasks=1\n#SBATCH --cpus-per-task=" + std::to_string(options.cpusPerTask) + "\n";
-    if (!options.partition.empty()) text += "#SBATCH --partition=" + quoted(options.partition) + "\n";
+    text +=
+        "#SBATCH --ntasks=1\n#SBATCH --cpus-per-task=" + std::to_string(options.cpusPerTask) + "\n";
+    if (!options.partition.empty())
+        text += "#SBATCH --partition=" + quoted(options.partition) + "\n";
     if (!options.time.empty()) text += "#SBATCH --time=" + options.time + "\n";
     return text;
 }
@@ -66,26 +71,33 @@ bool validSlurmTime(const std::string& text) {
     return std::regex_match(text, pattern);
 }
 
-std::string slurmScript(const std::string& sweepName, const std::vector<SweepRun>& runs, const fs::path& out,
-                        const std::string& lbdem, const SlurmOptions& options) {
+std::string slurmScript(const std::string& sweepName, const std::vector<SweepRun>& runs,
+                        const fs::path& out, const std::string& lbdem,
+                        const SlurmOptions& options) {
     const fs::path folder = fs::absolute(out);
     std::string text = header(sweepName, runs.size(), folder, options);
-    text += "# Written by `lbdem sweep --slurm`: task k runs one case with one packing seed into its own folder,\n"
-            "# continues it from its checkpoint, or does nothing once it has finished; resubmit to go on.\n"
+    text += "# Written by `lbdem sweep --slurm`: task k runs one case with one packing seed into "
+            "its own folder,\n"
+            "# continues it from its checkpoint, or does nothing once it has finished; resubmit to "
+            "go on.\n"
             "# Gather the finished runs with `lbdem sweep FILE --out DIR --report`.\n"
             "set -u\n"
             "export OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n"
-            "lbdem=" + quoted(lbdem) + "\n"
+            "lbdem=" +
+            quoted(lbdem) +
+            "\n"
             "case \"${SLURM_ARRAY_TASK_ID:?run this script with sbatch}\" in\n";
     for (std::size_t k = 0; k < runs.size(); ++k) {
         const auto& run = runs[k];
-        text += std::to_string(k) + ") dir=" + quoted(fs::absolute(run.entry.dir).string()) + "; set -- run " +
-                quoted(fs::absolute(run.casePath).string());
-        for (const auto& assignment : run.overrides) text += " --set " + quoted(assignment);
+        text += std::to_string(k) + ") dir=" + quoted(fs::absolute(run.entry.dir).string()) +
+                "; set -- run " + quoted(fs::absolute(run.casePath).string());
+        for (const auto& assignment : run.overrides)
+            text += " --set " + quoted(assignment);
         text += " ;;\n";
     }
     text += "*) echo \"no task $SLURM_ARRAY_TASK_ID in this array\" >&2; exit 2 ;;\nesac\n"
-            "if grep -qs '\"finished\": true' \"$dir/summary.json\"; then echo \"$dir: finished\"; exit 0; fi\n"
+            "if grep -qs '\"finished\": true' \"$dir/summary.json\"; then echo \"$dir: finished\"; "
+            "exit 0; fi\n"
             "if [ -f \"$dir/checkpoint.h5\" ]; then\n"
             "    set -- resume \"$dir\"\n"
             "else\n"
@@ -98,26 +110,31 @@ std::string slurmScript(const std::string& sweepName, const std::vector<SweepRun
     return text;
 }
 
-int submitSlurmSweep(const std::string& sweepName, const std::vector<SweepRun>& runs, const fs::path& out,
-                     const SlurmOptions& options, const std::string& reportCommand) {
+int submitSlurmSweep(const std::string& sweepName, const std::vector<SweepRun>& runs,
+                     const fs::path& out, const SlurmOptions& options,
+                     const std::string& reportCommand) {
     fs::create_directories(out / "slurm");
     const fs::path script = out / "sweep.sbatch";
-    io::writeFileAtomically(script.string(), slurmScript(sweepName, runs, out, selfExecutable(), options));
+    io::writeFileAtomically(script.string(),
+                            slurmScript(sweepName, runs, out, selfExecutable(), options));
     fs::permissions(script, fs::perms::owner_exec, fs::perm_options::add);
     std::cout << "wrote " << script.string() << " (" << runs.size() << " tasks)\n";
     const std::string sbatch = onPath("sbatch");
     if (sbatch.empty()) {
-        std::cout << "sbatch is not on PATH: submit it on the cluster with: sbatch " << script.string() << "\n"
+        std::cout << "sbatch is not on PATH: submit it on the cluster with: sbatch "
+                  << script.string() << "\n"
                   << "then gather the finished runs with: " << reportCommand << "\n";
         return kExitOk;
     }
-    const auto [output, status] = capture(quoted(sbatch) + " --parsable " + quoted(script.string()));
+    const auto [output, status] =
+        capture(quoted(sbatch) + " --parsable " + quoted(script.string()));
     if (status != 0) {
-        std::cerr << "lbdem: sbatch " << script.string() << " failed (" << status << "): " << output;
+        std::cerr << "lbdem: sbatch " << script.string() << " failed (" << status
+                  << "): " << output;
         return kExitFailure;
     }
-    std::cout << "submitted job " << output.substr(0, output.find_first_of(";\n")) << " (" << runs.size()
-              << " tasks); gather the finished runs with: " << reportCommand << "\n";
+    std::cout << "submitted job " << output.substr(0, output.find_first_of(";\n")) << " ("
+              << runs.size() << " tasks); gather the finished runs with: " << reportCommand << "\n";
     return kExitOk;
 }
 

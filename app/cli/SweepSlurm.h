@@ -25,7 +25,8 @@ bool validSlurmTime(const std::string& text);
 /// checkpoint, and does nothing for a run that has finished; so the script can be resubmitted.
 /// Paths are made absolute; lbdem is the executable the tasks start.
 std::string slurmScript(const std::string& sweepName, const std::vector<SweepRun>& runs,
-                        const std::filesystem::path& out, const std::string& lbdem, const SlurmOptions& options);
+                        const std::filesystem::path& out, const std::string& lbdem,
+                        const SlurmOptions& options);
 
 /// Writes OUT/sweep.sbatch and submits it with sbatch when sbatch is on PATH (else prints how to
 /// submit); prints the command that gathers the report. Returns the exit code of the command.

@@ -34,11 +34,13 @@ std::vector<const solver::VerificationCase*> selectCases(const std::vector<std::
     const auto& cases = solver::verificationCases();
     std::vector<const solver::VerificationCase*> selected;
     if (names.empty()) {
-        for (const auto& c : cases) selected.push_back(&c);
+        for (const auto& c : cases)
+            selected.push_back(&c);
         return selected;
     }
     std::vector<std::string> known;
-    for (const auto& c : cases) known.push_back(c.name);
+    for (const auto& c : cases)
+        known.push_back(c.name);
     for (const auto& name : names) {
         const solver::VerificationCase* found = nullptr;
         for (const auto& c : cases)
@@ -55,9 +57,9 @@ std::vector<const solver::VerificationCase*> selectCases(const std::vector<std::
 }
 
 nlohmann::json toJson(const solver::VerificationResult& r) {
-    return {{"name", r.name},       {"quantity", r.quantity},   {"value", r.value},
-            {"reference", r.reference}, {"error", r.error},     {"tolerance", r.tolerance},
-            {"passed", r.passed},   {"wall_s", r.wall_s},       {"method", r.method},
+    return {{"name", r.name},           {"quantity", r.quantity}, {"value", r.value},
+            {"reference", r.reference}, {"error", r.error},       {"tolerance", r.tolerance},
+            {"passed", r.passed},       {"wall_s", r.wall_s},     {"method", r.method},
             {"source", r.source}};
 }
 
@@ -71,7 +73,8 @@ void printRow(const solver::VerificationResult& r) {
 int runVerify(const VerifyOptions& options) {
     const auto cases = selectCases(options.names);
     if (options.list) {
-        for (const auto* c : cases) std::printf("%-22s %s\n", c->name.c_str(), c->description.c_str());
+        for (const auto* c : cases)
+            std::printf("%-22s %s\n", c->name.c_str(), c->description.c_str());
         return kExitOk;
     }
     solver::VerificationOptions runOptions;

@@ -17,15 +17,18 @@ int main(int argc, char** argv) {
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
     parser.addPositionalArgument("case", "TOML case file to open.", "[CASE]");
-    const QCommandLineOption set("set", "Override a case key, e.g. fluid.tau=0.51.", "section.key=value");
+    const QCommandLineOption set("set", "Override a case key, e.g. fluid.tau=0.51.",
+                                 "section.key=value");
     const QCommandLineOption steps("run-steps", "Run this many steps at start.", "N");
-    const QCommandLineOption shot("screenshot", "Save the window as PNG once the run is shown.", "FILE");
+    const QCommandLineOption shot("screenshot", "Save the window as PNG once the run is shown.",
+                                  "FILE");
     const QCommandLineOption quit("quit", "Quit after the screenshot.");
     parser.addOptions({set, steps, shot, quit});
 
     // Bad input is reported before any window or display is touched: one sentence, exit 2.
     QStringList arguments;
-    for (int k = 0; k < argc; ++k) arguments << QString::fromLocal8Bit(argv[k]);
+    for (int k = 0; k < argc; ++k)
+        arguments << QString::fromLocal8Bit(argv[k]);
     if (!parser.parse(arguments)) {
         std::cerr << "lbdem-studio: " << parser.errorText().toStdString() << "\n";
         return 2;
@@ -50,7 +53,8 @@ int main(int argc, char** argv) {
     script.quit = parser.isSet(quit);
     const bool scripted = parser.isSet(steps) || parser.isSet(shot) || script.quit;
     std::vector<std::string> overrides;
-    for (const QString& assignment : parser.values(set)) overrides.push_back(assignment.toStdString());
+    for (const QString& assignment : parser.values(set))
+        overrides.push_back(assignment.toStdString());
     const QString path = parser.positionalArguments().value(0);
     lbdem::solver::CaseSpec spec;
     try {

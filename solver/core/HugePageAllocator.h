@@ -18,14 +18,12 @@ namespace lbdem::solver {
 /// coupling and the bulk kernel spend much of their time in TLB misses (measured: the bulk
 /// kernel 20 % faster with huge pages on a 2000 x 1000 lattice). Where the system does not
 /// grant huge pages the hint is ignored and nothing else changes.
-template <class T>
-struct HugePageAllocator {
+template <class T> struct HugePageAllocator {
     using value_type = T;
     static constexpr std::size_t kHugePage = std::size_t(2) << 20;
 
     HugePageAllocator() = default;
-    template <class U>
-    HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
+    template <class U> HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
 
     /// Allocate n elements (2 MiB-aligned and huge-page advised when large).
     T* allocate(std::size_t n) {
@@ -41,18 +39,23 @@ struct HugePageAllocator {
     }
     /// Release a block from allocate(n).
     void deallocate(T* block, std::size_t n) noexcept {
-        if (n * sizeof(T) < kHugePage) ::operator delete(block);
-        else std::free(block);
+        if (n * sizeof(T) < kHugePage)
+            ::operator delete(block);
+        else
+            std::free(block);
     }
 };
 
 template <class T, class U>
-bool operator==(const HugePageAllocator<T>&, const HugePageAllocator<U>&) { return true; }
+bool operator==(const HugePageAllocator<T>&, const HugePageAllocator<U>&) {
+    return true;
+}
 template <class T, class U>
-bool operator!=(const HugePageAllocator<T>&, const HugePageAllocator<U>&) { return false; }
+bool operator!=(const HugePageAllocator<T>&, const HugePageAllocator<U>&) {
+    return false;
+}
 
 /// A vector whose large buffers live on huge pages.
-template <class T>
-using HugeVector = std::vector<T, HugePageAllocator<T>>;
+template <class T> using HugeVector = std::vector<T, HugePageAllocator<T>>;
 
 } // namespace lbdem::solver

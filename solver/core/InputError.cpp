@@ -8,7 +8,11 @@ namespace {
 /// Length of the valid UTF-8 sequence starting at text[k] (0 when invalid).
 std::size_t utf8Length(const std::string& text, std::size_t k) {
     const auto byte = static_cast<unsigned char>(text[k]);
-    const std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3 : (byte >> 3) == 0x1E ? 4 : 0;
+    const std::size_t length = byte < 0x80           ? 1
+                               : (byte >> 5) == 0x6  ? 2
+                               : (byte >> 4) == 0xE  ? 3
+                               : (byte >> 3) == 0x1E ? 4
+                                                     : 0;
     if (length == 0 || k + length > text.size()) return 0;
     for (std::size_t m = 1; m < length; ++m)
         if ((static_cast<unsigned char>(text[k + m]) >> 6) != 0x2) return 0;
@@ -57,6 +61,7 @@ InputError::InputError(const std::string& file, int line, const std::string& key
     : std::runtime_error(composeMessage(file, line, key, what)), m_file(file), m_line(line),
       m_key(key) {}
 
-InputError::InputError(const std::string& message) : std::runtime_error(printable(message, kMaxMessageBytes)) {}
+InputError::InputError(const std::string& message)
+    : std::runtime_error(printable(message, kMaxMessageBytes)) {}
 
 } // namespace lbdem::solver

@@ -3,7 +3,8 @@
 
 namespace lbdem::solver {
 
-/// Precision of solver state and arithmetic (docs/design.md §5: double; float storage is a kernel option).
+/// Precision of solver state and arithmetic (docs/design.md §5: double; float storage is a kernel
+/// option).
 using Real = double;
 
 } // namespace lbdem::solver

@@ -30,7 +30,8 @@ public:
     /// Add the time since start to stage and return the current time (to chain stages).
     Clock::time_point lap(Stage stage, Clock::time_point start) {
         const auto now = Clock::now();
-        m_seconds[static_cast<std::size_t>(stage)] += std::chrono::duration<double>(now - start).count();
+        m_seconds[static_cast<std::size_t>(stage)] +=
+            std::chrono::duration<double>(now - start).count();
         return now;
     }
     /// Seconds spent in stage so far.

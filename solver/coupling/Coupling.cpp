@@ -56,20 +56,24 @@ void Coupling::mapGrains() {
     std::fill(m_loadX.begin(), m_loadX.end(), 0.0);
     std::fill(m_loadY.begin(), m_loadY.end(), 0.0);
     std::fill(m_loadT.begin(), m_loadT.end(), 0.0);
-    if (m_params.method == CouplingMethod::BounceBack) mapBounceBack();
-    else mapPsm();
+    if (m_params.method == CouplingMethod::BounceBack)
+        mapBounceBack();
+    else
+        mapPsm();
     m_lattice.setLastSweptRow(topGrainRow());
 }
 
 int Coupling::topGrainRow() const {
-    // Two rows above the highest grain: its links reach one node out, the next kernel step one more.
+    // Two rows above the highest grain: its links reach one node out, the next kernel step one
+    // more.
     Real top = -1;
     for (std::size_t p = 0; p < m_dem.particles().size(); ++p) {
         Real cx, cy, r;
         grainGeometry(p, cx, cy, r);
         top = std::max(top, cy + r + 2);
     }
-    // Compared as Real: a grain far above the lattice (a hostile checkpoint) converts no huge value.
+    // Compared as Real: a grain far above the lattice (a hostile checkpoint) converts no huge
+    // value.
     const Real last = m_lattice.ny() - 1;
     return static_cast<int>(top < 0 || !(top < last) ? last : top);
 }
@@ -88,8 +92,8 @@ void Coupling::collectForces() {
     // whose eigenvalue -1/(3M) - sqrt(1 + 1/(9M^2)) lies outside the unit circle. This grew into a
     // Mach ~1 blow-up beside a grain resting in the floor-wall corner at tau = 0.506. The two-step
     // mean cancels the period-two part of the force and leaves slowly varying loads unchanged.
-    const bool average =
-        m_params.method == CouplingMethod::BounceBack && m_previousLoad.size() == 3 * m_loadX.size();
+    const bool average = m_params.method == CouplingMethod::BounceBack &&
+                         m_previousLoad.size() == 3 * m_loadX.size();
     for (std::size_t i = 0; i < n; ++i) {
         Real lx = m_loadX[i], ly = m_loadY[i], lt = m_loadT[i];
         if (average) {
@@ -183,17 +187,20 @@ void Coupling::restore(const CouplingState& state) {
 
 void Coupling::renumberGrains(const std::vector<std::int32_t>& newToOld) {
     std::vector<std::int32_t> oldToNew(newToOld.size(), -1);
-    for (std::size_t k = 0; k < newToOld.size(); ++k) oldToNew[newToOld[k]] = static_cast<std::int32_t>(k);
+    for (std::size_t k = 0; k < newToOld.size(); ++k)
+        oldToNew[newToOld[k]] = static_cast<std::int32_t>(k);
     for (std::int32_t& owner : m_owner)
         if (owner >= 0) owner = oldToNew[owner];
     if (m_box.size() == newToOld.size()) {
         const std::vector<Box> old = m_box;
-        for (std::size_t k = 0; k < newToOld.size(); ++k) m_box[k] = old[newToOld[k]];
+        for (std::size_t k = 0; k < newToOld.size(); ++k)
+            m_box[k] = old[newToOld[k]];
     }
     if (m_previousLoad.size() == 3 * newToOld.size()) {
         const std::vector<Real> old = m_previousLoad;
         for (std::size_t k = 0; k < newToOld.size(); ++k)
-            for (int c = 0; c < 3; ++c) m_previousLoad[3 * k + c] = old[3 * newToOld[k] + c];
+            for (int c = 0; c < 3; ++c)
+                m_previousLoad[3 * k + c] = old[3 * newToOld[k] + c];
     }
     resizeGrains();
 }

@@ -1,4 +1,5 @@
-// Resolved fluid-grain coupling: moving bounce-back or partially saturated cells, with unit conversion.
+// Resolved fluid-grain coupling: moving bounce-back or partially saturated cells, with unit
+// conversion.
 #pragma once
 
 #include "solver/core/HugePageAllocator.h"
@@ -39,9 +40,9 @@ struct CouplingParams {
     CouplingMethod method = CouplingMethod::BounceBack;
     Real hydro_radius_ratio = 0.9; ///< r_h / R seen by the fluid (contacts keep R)
     PsmWeight psm_weight = PsmWeight::Nt;
-    Real h = 1;                    ///< lattice spacing [m]
-    Real dt = 1;                   ///< fluid time step [s]
-    Real rho_f = 1;                ///< fluid density [kg/m^3]
+    Real h = 1;                      ///< lattice spacing [m]
+    Real dt = 1;                     ///< fluid time step [s]
+    Real rho_f = 1;                  ///< fluid density [kg/m^3]
     Real origin_x = 0, origin_y = 0; ///< SI position of the lattice's domain corner [m]
 };
 
@@ -89,7 +90,8 @@ public:
     GrainLoad load(std::size_t i) const;
     /// Hydrodynamic load on grain i of the last step, lattice units.
     GrainLoad latticeLoad(std::size_t i) const;
-    /// Solid fraction per lattice cell (index lattice.index(i, j)): 0/1 for bounce-back, eps for PSM.
+    /// Solid fraction per lattice cell (index lattice.index(i, j)): 0/1 for bounce-back, eps for
+    /// PSM.
     const std::vector<Real>& solidFraction() const { return m_solid; }
     /// Grain covering each cell at the last mapGrains (-1: none); bounce-back only.
     const HugeVector<std::int32_t>& owners() const { return m_owner; }
@@ -98,7 +100,9 @@ public:
     /// The parameters the coupling was built with.
     const CouplingParams& params() const { return m_params; }
     /// Lattice force unit rho_f h^3 / dt^2 [N/m per lattice unit].
-    Real forceUnit() const { return m_params.rho_f * m_params.h * m_params.h * m_params.h / (m_params.dt * m_params.dt); }
+    Real forceUnit() const {
+        return m_params.rho_f * m_params.h * m_params.h * m_params.h / (m_params.dt * m_params.dt);
+    }
     /// Lattice torque unit rho_f h^4 / dt^2 [N per lattice unit].
     Real torqueUnit() const { return forceUnit() * m_params.h; }
 
@@ -115,15 +119,33 @@ private:
     static constexpr long long kParallelMin = 4096;
 
     /// A node whose owner changes this step: a grain covers it, or its grain leaves it.
-    struct Change { long long cell; std::int32_t grain; int iu, ju; bool cover; };
+    struct Change {
+        long long cell;
+        std::int32_t grain;
+        int iu, ju;
+        bool cover;
+    };
     /// Nodes a grain's scan visits, in unwrapped lattice indices (inclusive).
-    struct Box { int i0 = 0, i1 = -1, j0 = 0, j1 = -1; };
-    struct PsmEntry { long long cell; std::int32_t grain; Real eps, rx, ry; };
+    struct Box {
+        int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+    };
+    struct PsmEntry {
+        long long cell;
+        std::int32_t grain;
+        Real eps, rx, ry;
+    };
     /// A covered node within 1.5 of its grain's surface: reset to the surface motion, source of
     /// the moving-wall links. (i, j) wrapped into the lattice, (sx, sy) from the grain's centre.
-    struct SurfaceNode { long long cell; int i, j; std::int32_t grain; Real sx, sy; };
+    struct SurfaceNode {
+        long long cell;
+        int i, j;
+        std::int32_t grain;
+        Real sx, sy;
+    };
     /// What the links of one grain need: radius and surface motion, lattice units.
-    struct GrainMotion { Real r, vx, vy, w; };
+    struct GrainMotion {
+        Real r, vx, vy, w;
+    };
 
     long long wrapCell(int iu, int ju) const;
     /// Wrap (i, j) into the lattice across periodic sides; false when it lies outside.
@@ -156,8 +178,7 @@ private:
     /// Reset every surface node and apply its links, visiting the nodes row by row (memory
     /// order); loads are summed per grain afterwards in grain order. Returns the link count.
     std::size_t linkSurfaceNodes();
-    template <class S>
-    std::size_t linkSurfaceNodesStored(S* stored);
+    template <class S> std::size_t linkSurfaceNodesStored(S* stored);
     void mapPsm();
     void collidePsm();
 
@@ -168,13 +189,14 @@ private:
     Real m_originX = 0, m_originY = 0; // lattice coordinate of node (0, 0)
     bool m_initialised = false;
 
-    HugeVector<std::int32_t> m_owner;   // per cell: grain covering it, -1 none, -2 just uncovered
-    std::vector<Real> m_solid;          // per cell: solid fraction (snapshot)
-    std::vector<Box> m_box;             // bounce-back, per grain: the box its nodes lie in
-    std::vector<std::vector<Change>> m_threadChanges; // per thread, grains in order
-    std::vector<Change> m_uncovered;    // nodes left by their grain this step
+    HugeVector<std::int32_t> m_owner; // per cell: grain covering it, -1 none, -2 just uncovered
+    std::vector<Real> m_solid;        // per cell: solid fraction (snapshot)
+    std::vector<Box> m_box;           // bounce-back, per grain: the box its nodes lie in
+    std::vector<std::vector<Change>> m_threadChanges;      // per thread, grains in order
+    std::vector<Change> m_uncovered;                       // nodes left by their grain this step
     std::vector<std::vector<SurfaceNode>> m_threadSurface; // per thread, grains in order
-    std::vector<SurfaceNode> m_surface; // surface nodes of all grains, row by row (grain order within)
+    std::vector<SurfaceNode>
+        m_surface; // surface nodes of all grains, row by row (grain order within)
     std::vector<std::int32_t> m_rowStart; // counting sort of m_surface by row
     std::vector<int> m_prefetchSpan;    // per row: first and last column its links' rows may touch
     std::vector<Real> m_surfaceLoad;    // per surface node: (fx, fy, torque) of its links
@@ -183,9 +205,9 @@ private:
     std::vector<long long> m_linkStart; // PSM: first entry of each touched cell (prefix sums)
     std::vector<Real> m_linkLoad;       // per PSM entry: momentum and torque exchanged
     std::vector<PsmEntry> m_psm;
-    std::vector<long long> m_psmCells;  // cells touched by the last PSM mapping
+    std::vector<long long> m_psmCells;           // cells touched by the last PSM mapping
     std::vector<Real> m_loadX, m_loadY, m_loadT; // lattice units, per grain
-    std::vector<Real> m_previousLoad;   // bounce-back: (fx, fy, torque) per grain of the step before
+    std::vector<Real> m_previousLoad; // bounce-back: (fx, fy, torque) per grain of the step before
 };
 
 // Inline helpers of the per-node loops (they run once per covered node or link).
@@ -219,7 +241,8 @@ inline void Coupling::grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) 
 }
 
 inline void Coupling::surfaceVelocity(std::size_t p, Real rx, Real ry, Real& ux, Real& uy) const {
-    // u_p + omega x r in lattice units (u dt / h, omega dt); (rx, ry) from the centre, lattice units.
+    // u_p + omega x r in lattice units (u dt / h, omega dt); (rx, ry) from the centre, lattice
+    // units.
     const auto& g = m_dem.particles();
     const Real scale = m_params.dt / m_params.h, w = g.omega[p] * m_params.dt;
     ux = g.vx[p] * scale - w * ry;

@@ -21,7 +21,8 @@ inline Real cellSolidFraction(Real cx, Real cy, Real r, Real px, Real py) {
     if (fx * fx + fy * fy <= r * r) return 1;
     const Real nx = std::max(dx - Real(0.5), Real(0)), ny = std::max(dy - Real(0.5), Real(0));
     if (nx * nx + ny * ny >= r * r) return 0;
-    return discRectangleOverlap(cx, cy, r, px - Real(0.5), py - Real(0.5), px + Real(0.5), py + Real(0.5));
+    return discRectangleOverlap(cx, cy, r, px - Real(0.5), py - Real(0.5), px + Real(0.5),
+                                py + Real(0.5));
 }
 
 /// Fraction q in [0, 1] of the link from (px, py) along (ex, ey) where it enters the circle of

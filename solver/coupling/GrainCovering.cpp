@@ -49,9 +49,11 @@ Coupling::Box Coupling::clippedBox(Real cx, Real cy, Real r, Real margin) const 
     const Real nx = m_lattice.nx(), ny = m_lattice.ny();
     Box box;
     clipRange(std::ceil(cx - r - m_originX - margin), std::floor(cx + r - m_originX + margin),
-              m_periodicX ? -nx : 0, m_periodicX ? 2 * nx - 1 : nx - 1, m_periodicX ? nx : 0, box.i0, box.i1);
+              m_periodicX ? -nx : 0, m_periodicX ? 2 * nx - 1 : nx - 1, m_periodicX ? nx : 0,
+              box.i0, box.i1);
     clipRange(std::ceil(cy - r - m_originY - margin), std::floor(cy + r - m_originY + margin),
-              m_periodicY ? -ny : 0, m_periodicY ? 2 * ny - 1 : ny - 1, m_periodicY ? ny : 0, box.j0, box.j1);
+              m_periodicY ? -ny : 0, m_periodicY ? 2 * ny - 1 : ny - 1, m_periodicY ? ny : 0,
+              box.j0, box.j1);
     if (box.i0 > box.i1 || box.j0 > box.j1) return Box{};
     return box;
 }
@@ -71,7 +73,8 @@ void Coupling::findGrainChanges(std::size_t p, std::vector<Change>& out) const {
     grainGeometry(p, cx, cy, r);
     Box scan = grainBox(p);
     const Box& last = m_box[p];
-    if (scan.i0 > scan.i1) scan = last;
+    if (scan.i0 > scan.i1)
+        scan = last;
     else if (last.i0 <= last.i1 && last.j0 <= last.j1) {
         scan.i0 = std::min(scan.i0, last.i0);
         scan.i1 = std::max(scan.i1, last.i1);
@@ -121,8 +124,10 @@ void Coupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0, int i1, 
         }
         const bool inside = geometric && m_lattice.isFluid(c);
         const std::int32_t owner = m_owner[c];
-        if (inside && owner != id) out.push_back({c, id, iu, ju, true});
-        else if (!inside && owner == id) out.push_back({c, id, iu, ju, false});
+        if (inside && owner != id)
+            out.push_back({c, id, iu, ju, true});
+        else if (!inside && owner == id)
+            out.push_back({c, id, iu, ju, false});
     }
 }
 
@@ -130,9 +135,10 @@ void Coupling::findChanges() {
     const std::size_t n = m_dem.particles().size();
     const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
     if (m_threadChanges.size() < static_cast<std::size_t>(threads)) m_threadChanges.resize(threads);
-    for (auto& list : m_threadChanges) list.clear();
-    // Static schedule: thread t takes the t-th block of grains, so the lists, read in thread
-    // order, hold the changes in grain order whatever the thread count.
+    for (auto& list : m_threadChanges)
+        list.clear();
+        // Static schedule: thread t takes the t-th block of grains, so the lists, read in thread
+        // order, hold the changes in grain order whatever the thread count.
 #pragma omp parallel num_threads(threads) if (threads > 1)
     {
         std::vector<Change>& out = m_threadChanges[ompThreadIndex()];
@@ -210,7 +216,8 @@ void Coupling::refillUncovered() {
         m_loadT[c.grain] -= rho * (dx * uy - dy * ux);
         long long slots[kQ];
         m_lattice.postSlots(c.cell, slots);
-        for (int q = 0; q < kQ; ++q) m_lattice.setPopulation(slots[q], q, equilibrium(q, rho, ux, uy));
+        for (int q = 0; q < kQ; ++q)
+            m_lattice.setPopulation(slots[q], q, equilibrium(q, rho, ux, uy));
         m_solid[c.cell] = 0;
     }
     for (const Change& c : m_uncovered)

@@ -5,7 +5,8 @@
 //      covering, found in the ring it swept (GrainCovering.cpp);
 //   2. applyChanges + refillUncovered (serial, cost ~ changed nodes): ownership, momentum of
 //      swallowed and released fluid;
-//   3. findSurfaceNodes (parallel over grains): each grain's covered nodes within 1.5 of its surface;
+//   3. findSurfaceNodes (parallel over grains): each grain's covered nodes within 1.5 of its
+//   surface;
 //   4. linkSurfaceNodes (parallel over rows): the surface nodes row by row, in memory order, so
 //      that the populations of a few neighbouring rows serve every grain crossing them while they
 //      are in cache (grain by grain, each lattice line was fetched again by every neighbouring
@@ -15,8 +16,8 @@
 // are independent; their loads sum per grain in grain order afterwards (any thread count).
 #include "solver/coupling/Coupling.h"
 
-#include "solver/coupling/DiscGeometry.h"
 #include "solver/core/OpenMp.h"
+#include "solver/coupling/DiscGeometry.h"
 #include "solver/lattice/D2Q9.h"
 
 #include <algorithm>
@@ -60,18 +61,21 @@ void Coupling::findSurfaceNodes() {
     }
     const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
     if (m_threadSurface.size() < static_cast<std::size_t>(threads)) m_threadSurface.resize(threads);
-    for (auto& list : m_threadSurface) list.clear();
+    for (auto& list : m_threadSurface)
+        list.clear();
 #pragma omp parallel num_threads(threads) if (threads > 1)
     {
         std::vector<SurfaceNode>& out = m_threadSurface[ompThreadIndex()];
 #pragma omp for schedule(static)
-        for (long long p = 0; p < static_cast<long long>(n); ++p) findGrainSurface(static_cast<std::size_t>(p), out);
+        for (long long p = 0; p < static_cast<long long>(n); ++p)
+            findGrainSurface(static_cast<std::size_t>(p), out);
     }
     // Counting sort by row, stable: row by row, and within a row in grain order. Per row, the
     // columns within two rows of its surface nodes, which its links may touch (prefetched).
     const int ny = m_lattice.ny();
     m_rowStart.assign(static_cast<std::size_t>(ny) + 1, 0);
-    std::vector<int> firstColumn(static_cast<std::size_t>(ny), m_lattice.nx()), lastColumn(static_cast<std::size_t>(ny), -1);
+    std::vector<int> firstColumn(static_cast<std::size_t>(ny), m_lattice.nx()),
+        lastColumn(static_cast<std::size_t>(ny), -1);
     for (const auto& list : m_threadSurface)
         for (const SurfaceNode& node : list) {
             ++m_rowStart[node.j + 1];
@@ -86,10 +90,12 @@ void Coupling::findSurfaceNodes() {
         m_prefetchSpan[2 * j] = std::max(lo - 2, 0);
         m_prefetchSpan[2 * j + 1] = std::min(hi + 2, m_lattice.nx() - 1);
     }
-    for (int j = 0; j < ny; ++j) m_rowStart[j + 1] += m_rowStart[j];
+    for (int j = 0; j < ny; ++j)
+        m_rowStart[j + 1] += m_rowStart[j];
     m_surface.resize(static_cast<std::size_t>(m_rowStart[ny]));
     for (const auto& list : m_threadSurface)
-        for (const SurfaceNode& node : list) m_surface[m_rowStart[node.j]++] = node;
+        for (const SurfaceNode& node : list)
+            m_surface[m_rowStart[node.j]++] = node;
 }
 
 void Coupling::findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) const {
@@ -108,8 +114,10 @@ void Coupling::findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) co
         // The row's chord, one node wider on each side against rounding; the owner decides.
         // (Bounds are clipped to the box as Real: no conversion of an out-of-range value.)
         const Real half = std::sqrt(r * r - sy * sy);
-        const int lo = static_cast<int>(std::max(static_cast<Real>(box.i0), std::floor(centreI - half)));
-        const int hi = static_cast<int>(std::min(static_cast<Real>(box.i1), std::ceil(centreI + half)));
+        const int lo =
+            static_cast<int>(std::max(static_cast<Real>(box.i0), std::floor(centreI - half)));
+        const int hi =
+            static_cast<int>(std::min(static_cast<Real>(box.i1), std::ceil(centreI + half)));
         // Nodes surely deeper than `deep`, one node narrower on each side against rounding.
         int deepLo = hi + 1, deepHi = hi;
         if (deep > 0 && sy * sy < deep * deep) {
@@ -137,8 +145,7 @@ namespace {
 /// Node access of the links of a surface node at least two nodes from every edge of the lattice:
 /// neighbours at fixed offsets, populations straight from the stored values S at the parity's
 /// slot offsets (Lattice::postSlotOffset). Nothing here wraps, divides or branches on storage.
-template <class S>
-struct InteriorAccess {
+template <class S> struct InteriorAccess {
     S* f;
     const std::uint8_t* flags;
     const std::int32_t* owner;
@@ -147,9 +154,15 @@ struct InteriorAccess {
 
     long long neighbour(long long cell, int dir) const { return cell + offset[dir]; }
     /// Fluid and covered by no grain.
-    bool open(long long cell) const { return flags[cell] == lattice::Lattice::kFluid && owner[cell] < 0; }
-    Real get(long long cell, int dir) const { return lattice::StoredPopulation<S>::load(f[cell + slot[dir]], kW[dir]); }
-    void set(long long cell, int dir, Real v) const { f[cell + slot[dir]] = lattice::StoredPopulation<S>::store(v, kW[dir]); }
+    bool open(long long cell) const {
+        return flags[cell] == lattice::Lattice::kFluid && owner[cell] < 0;
+    }
+    Real get(long long cell, int dir) const {
+        return lattice::StoredPopulation<S>::load(f[cell + slot[dir]], kW[dir]);
+    }
+    void set(long long cell, int dir, Real v) const {
+        f[cell + slot[dir]] = lattice::StoredPopulation<S>::store(v, kW[dir]);
+    }
 };
 
 /// Reset the surface node `cell` (offset (sx, sy) from the centre of a grain of radius r moving
@@ -162,20 +175,21 @@ struct InteriorAccess {
 ///   q >= 1/2: f_in(x_f) = f_out/(2q) + (2q - 1)/(2q) f_in^post(x_f) + 3 w rho c_in.u_w / q
 /// u_w = u_p + omega x r at the wall point x_f + q c. The value is stored where the next step
 /// reads the population arriving at x_f along c_in: the solid node's post-collision slot.
-/// Momentum exchange, Galilean invariant (Wen et al. 2014): dP = (c - u_w) f_out - (c_in - u_w) f_in,
-/// on the excess populations f - w rho_0 (rho_0 = 1, the fluid at rest): the rest state's
+/// Momentum exchange, Galilean invariant (Wen et al. 2014): dP = (c - u_w) f_out - (c_in - u_w)
+/// f_in, on the excess populations f - w rho_0 (rho_0 = 1, the fluid at rest): the rest state's
 /// share 2 w rho_0 c integrates to zero over a closed wetted surface (each lattice line enters
 /// and leaves it), but where the surface faces another grain or a wall and has no link, it
 /// would leave a pull of the absolute pressure rho_0 c_s^2 on the open side. Subtracting it
 /// makes an unwetted part of a surface contribute nothing (the verify case near-contact).
 template <class Access>
-int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, Real vx, Real vy, Real w,
-                    Real& loadX, Real& loadY, Real& loadT) {
+int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, Real vx, Real vy,
+                    Real w, Real& loadX, Real& loadY, Real& loadT) {
     // The surface node holds the equilibrium of the surface motion (finite values for the
     // branch-free bulk kernel, a meaningful velocity in snapshots); its links then overwrite the
     // slots its fluid neighbours read.
     const Real sux = vx - w * sy, suy = vy + w * sx;
-    for (int q = 0; q < kQ; ++q) a.set(cell, q, equilibrium(q, 1.0, sux, suy));
+    for (int q = 0; q < kQ; ++q)
+        a.set(cell, q, equilibrium(q, 1.0, sux, suy));
     int links = 0;
     for (int back = 1; back < kQ; ++back) { // fluid node x_f = solid + c_back
         const long long fluid = a.neighbour(cell, back);
@@ -186,7 +200,8 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
         const Real rx = px + q * kCx[toward], ry = py + q * kCy[toward];
         const Real out = a.get(fluid, toward);
         Real rho = 0;
-        for (int k = 0; k < kQ; ++k) rho += a.get(fluid, k);
+        for (int k = 0; k < kQ; ++k)
+            rho += a.get(fluid, k);
         const Real ux = vx - w * ry, uy = vy + w * rx;
         const Real moving = 6.0 * kW[back] * rho * (kCx[back] * ux + kCy[back] * uy);
         Real value;
@@ -219,11 +234,16 @@ struct Coupling::EdgeAccess {
 
     long long neighbour(long long cell, int dir) const {
         const int nx = lattice.nx();
-        return c.wrapCell(static_cast<int>(cell % nx) + kCx[dir], static_cast<int>(cell / nx) + kCy[dir]);
+        return c.wrapCell(static_cast<int>(cell % nx) + kCx[dir],
+                          static_cast<int>(cell / nx) + kCy[dir]);
     }
     bool open(long long cell) const { return lattice.isFluid(cell) && c.m_owner[cell] < 0; }
-    Real get(long long cell, int dir) const { return lattice.population(lattice.postSlot(cell, dir), dir); }
-    void set(long long cell, int dir, Real v) const { lattice.setPopulation(lattice.postSlot(cell, dir), dir, v); }
+    Real get(long long cell, int dir) const {
+        return lattice.population(lattice.postSlot(cell, dir), dir);
+    }
+    void set(long long cell, int dir, Real v) const {
+        lattice.setPopulation(lattice.postSlot(cell, dir), dir, v);
+    }
 };
 
 std::size_t Coupling::linkSurfaceNodes() {
@@ -232,8 +252,7 @@ std::size_t Coupling::linkSurfaceNodes() {
                : linkSurfaceNodesStored(m_lattice.storedDoubles());
 }
 
-template <class S>
-std::size_t Coupling::linkSurfaceNodesStored(S* stored) {
+template <class S> std::size_t Coupling::linkSurfaceNodesStored(S* stored) {
     constexpr int kPrefetchRows = 5; // the links of row j touch rows j - 2 .. j + 2
     constexpr int kPerLine = 64 / static_cast<int>(sizeof(S));
     InteriorAccess<S> interior{stored, m_lattice.flags(), m_owner.data(), {}, {}};
@@ -258,7 +277,8 @@ std::size_t Coupling::linkSurfaceNodesStored(S* stored) {
             if (row < ny && m_prefetchSpan[2 * row + 1] >= 0)
                 for (int q = 0; q < kQ; ++q) {
                     const S* line = stored + q * cells + m_lattice.index(0, row);
-                    for (int i = m_prefetchSpan[2 * row]; i <= m_prefetchSpan[2 * row + 1]; i += kPerLine)
+                    for (int i = m_prefetchSpan[2 * row]; i <= m_prefetchSpan[2 * row + 1];
+                         i += kPerLine)
                         __builtin_prefetch(line + i, 1);
                 }
         }
@@ -266,8 +286,10 @@ std::size_t Coupling::linkSurfaceNodesStored(S* stored) {
         Real loadX = 0, loadY = 0, loadT = 0;
         // Fluid neighbours lie one node away, the nodes behind them two.
         const bool inner = node.i >= 2 && node.i < nx - 2 && node.j >= 2 && node.j < ny - 2;
-        links += inner ? linkSurfaceNode(interior, node.cell, node.sx, node.sy, m.r, m.vx, m.vy, m.w, loadX, loadY, loadT)
-                       : linkSurfaceNode(edge, node.cell, node.sx, node.sy, m.r, m.vx, m.vy, m.w, loadX, loadY, loadT);
+        links += inner ? linkSurfaceNode(interior, node.cell, node.sx, node.sy, m.r, m.vx, m.vy,
+                                         m.w, loadX, loadY, loadT)
+                       : linkSurfaceNode(edge, node.cell, node.sx, node.sy, m.r, m.vx, m.vy, m.w,
+                                         loadX, loadY, loadT);
         m_surfaceLoad[3 * k] = loadX;
         m_surfaceLoad[3 * k + 1] = loadY;
         m_surfaceLoad[3 * k + 2] = loadT;

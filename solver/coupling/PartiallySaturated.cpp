@@ -1,4 +1,5 @@
-// Partially saturated cells (Noble & Torczynski 1998): solid fractions, weighted solid collision, loads.
+// Partially saturated cells (Noble & Torczynski 1998): solid fractions, weighted solid collision,
+// loads.
 #include "solver/coupling/Coupling.h"
 
 #include "solver/coupling/DiscGeometry.h"
@@ -19,7 +20,8 @@ using lattice::kQ;
 void Coupling::mapPsm() {
     // eps of a cell = exact area of the unit cell covered by the disc of radius r_h. A cell two
     // grains overlap keeps one entry per grain; its total fraction is clipped at 1.
-    for (long long c : m_psmCells) m_solid[c] = 0;
+    for (long long c : m_psmCells)
+        m_solid[c] = 0;
     m_psmCells.clear();
     m_psm.clear();
     const std::size_t n = m_dem.particles().size();
@@ -62,7 +64,7 @@ struct PsmContext {
     lattice::Lattice* lattice; // its post-collision populations are overwritten (setPopulation)
     const Real* incoming;      // per cell group: the kQ populations the step streamed into the cell
     int nx;
-    Real fx, fy;       // lattice body force (Guo), part of the fluid velocity
+    Real fx, fy; // lattice body force (Guo), part of the fluid velocity
     Real tauMinusHalf;
     bool ntWeight;
     bool zouHeLeft, zouHeRight;
@@ -82,12 +84,14 @@ inline Real psmWeight(const PsmContext& ctx, Real eps) {
 ///   Omega^s_i = [f_-i - f_-i^eq(rho, u)] - [f_i - f_i^eq(rho, u_p)]   (NT 1998),
 ///   B = B(eps_total), B_p = B eps_p / sum eps, load on p: -B_p sum_i Omega^s_i c_i.
 template <class C, class Entry, class Surface, class Load>
-static void psmCell(const PsmContext& ctx, const C& collide, const Real* incoming, const Entry* first,
-                    const Entry* last, const Surface& surface, const Load& addLoad) {
+static void psmCell(const PsmContext& ctx, const C& collide, const Real* incoming,
+                    const Entry* first, const Entry* last, const Surface& surface,
+                    const Load& addLoad) {
     const long long cell = first->cell;
     const int x = static_cast<int>(cell % ctx.nx);
     if ((ctx.zouHeLeft && x == 0) || (ctx.zouHeRight && x == ctx.nx - 1)) {
-        for (const Entry* e = first; e != last; ++e) addLoad(e, 0, 0, 0); // Zou-He nodes stay fluid
+        for (const Entry* e = first; e != last; ++e)
+            addLoad(e, 0, 0, 0); // Zou-He nodes stay fluid
         return;
     }
     Real f[kQ];
@@ -99,12 +103,14 @@ static void psmCell(const PsmContext& ctx, const C& collide, const Real* incomin
         jy += kCy[q] * f[q];
     }
     const Real ux = (jx + 0.5 * ctx.fx) / rho, uy = (jy + 0.5 * ctx.fy) / rho;
-    for (const Entry* e = first; e != last; ++e) sumEps += e->eps;
+    for (const Entry* e = first; e != last; ++e)
+        sumEps += e->eps;
     const Real b = psmWeight(ctx, std::min(sumEps, Real(1)));
     Real fc[kQ], out[kQ];
     std::copy(f, f + kQ, fc);
     collide(fc);
-    for (int q = 0; q < kQ; ++q) out[q] = f[q] + (1 - b) * (fc[q] - f[q]);
+    for (int q = 0; q < kQ; ++q)
+        out[q] = f[q] + (1 - b) * (fc[q] - f[q]);
     for (const Entry* e = first; e != last; ++e) {
         const Real bp = b * e->eps / sumEps;
         Real sx, sy;
@@ -112,7 +118,8 @@ static void psmCell(const PsmContext& ctx, const C& collide, const Real* incomin
         Real px = 0, py = 0;
         for (int q = 0; q < kQ; ++q) {
             const int o = kOpposite[q];
-            const Real omega = (f[o] - equilibrium(o, rho, ux, uy)) - (f[q] - equilibrium(q, rho, sx, sy));
+            const Real omega =
+                (f[o] - equilibrium(o, rho, ux, uy)) - (f[q] - equilibrium(q, rho, sx, sy));
             out[q] += bp * omega;
             px += bp * omega * kCx[q];
             py += bp * omega * kCy[q];
@@ -121,7 +128,8 @@ static void psmCell(const PsmContext& ctx, const C& collide, const Real* incomin
     }
     long long slots[kQ];
     ctx.lattice->postSlots(cell, slots);
-    for (int q = 0; q < kQ; ++q) ctx.lattice->setPopulation(slots[q], q, out[q]);
+    for (int q = 0; q < kQ; ++q)
+        ctx.lattice->setPopulation(slots[q], q, out[q]);
 }
 
 void Coupling::collidePsm() {
@@ -129,11 +137,19 @@ void Coupling::collidePsm() {
     const LatticeSetup& s = m_lattice.setup();
     const CollisionParams& p = s.collision;
     const Real* incoming = m_lattice.recordedIncoming().data();
-    PsmContext ctx{&m_lattice, incoming,
-                   m_lattice.nx(), s.fx, s.fy, p.tau - 0.5, m_params.psm_weight == PsmWeight::Nt,
+    PsmContext ctx{&m_lattice,
+                   incoming,
+                   m_lattice.nx(),
+                   s.fx,
+                   s.fy,
+                   p.tau - 0.5,
+                   m_params.psm_weight == PsmWeight::Nt,
                    s.left.type == SideType::ZouHeVelocity || s.left.type == SideType::ZouHePressure,
-                   s.right.type == SideType::ZouHeVelocity || s.right.type == SideType::ZouHePressure};
-    auto surface = [this](std::int32_t g, Real rx, Real ry, Real& ux, Real& uy) { surfaceVelocity(g, rx, ry, ux, uy); };
+                   s.right.type == SideType::ZouHeVelocity ||
+                       s.right.type == SideType::ZouHePressure};
+    auto surface = [this](std::int32_t g, Real rx, Real ry, Real& ux, Real& uy) {
+        surfaceVelocity(g, rx, ry, ux, uy);
+    };
     // Loads go to one slot per entry and are summed per grain afterwards, in entry order, so
     // the cells can be collided in parallel with a result independent of the thread count.
     m_linkLoad.resize(3 * m_psm.size());
@@ -149,24 +165,31 @@ void Coupling::collidePsm() {
     auto run = [&](const auto& collide) {
 #pragma omp parallel for schedule(static) if (groups > kParallelMin)
         for (long long g = 0; g < groups; ++g)
-            psmCell(ctx, collide, incoming + g * kQ, base + m_linkStart[g], base + m_linkStart[g + 1], surface,
-                    addLoad);
+            psmCell(ctx, collide, incoming + g * kQ, base + m_linkStart[g],
+                    base + m_linkStart[g + 1], surface, addLoad);
     };
-    // The same operator, parameters and dispatch as Lattice::step, so a cell with B = 0 is unchanged.
+    // The same operator, parameters and dispatch as Lattice::step, so a cell with B = 0 is
+    // unchanged.
     const bool force = s.fx != 0 || s.fy != 0;
     const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
     switch (p.model) {
     case CollisionModel::Bgk:
-        if (force) run(BgkCollision<true>{sNu, s.fx, s.fy});
-        else run(BgkCollision<false>{sNu, s.fx, s.fy});
+        if (force)
+            run(BgkCollision<true>{sNu, s.fx, s.fy});
+        else
+            run(BgkCollision<false>{sNu, s.fx, s.fy});
         break;
     case CollisionModel::Mrt:
-        if (force) run(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        else run(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        if (force)
+            run(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        else
+            run(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
         break;
     case CollisionModel::MrtLes:
-        if (force) run(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        else run(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        if (force)
+            run(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
+        else
+            run(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
         break;
     }
     for (std::size_t k = 0; k < m_psm.size(); ++k) {

@@ -24,6 +24,8 @@ Real dampingCoefficient(Real stiffness, Real effectiveMass, Real restitution) {
     return 2 * dampingRatio(restitution) * std::sqrt(stiffness * effectiveMass);
 }
 
-Real discMass(Real radius, Real density) { return density * kPi * radius * radius; }
+Real discMass(Real radius, Real density) {
+    return density * kPi * radius * radius;
+}
 
 } // namespace lbdem::solver::dem

@@ -20,7 +20,7 @@ struct Material {
     /// Contacts exert torque (tangential force times radius, rolling resistance); false: they
     /// push the discs' centres only and never turn them (as in the reference's published code).
     bool contact_torque = true;
-    Real density = 2650;               ///< grain density [kg/m^3]
+    Real density = 2650; ///< grain density [kg/m^3]
 };
 
 /// Damping ratio zeta of a linear spring-dashpot that gives restitution e when the contact ends

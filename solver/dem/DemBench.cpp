@@ -12,7 +12,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 } // namespace
 
@@ -40,17 +42,20 @@ DemBenchResult runDemBench(const DemBenchConfig& config) {
         system.addWall(Vec2(0, 0), Vec2(pile.width, 0));
         system.addWall(Vec2(0, 0), Vec2(0, 4 * pile.height));
         system.addWall(Vec2(pile.width, 0), Vec2(pile.width, 4 * pile.height));
-        for (std::size_t k = 0; k < pile.x.size(); ++k) system.addDisc(pile.x[k], pile.y[k], pile.radius[k]);
+        for (std::size_t k = 0; k < pile.x.size(); ++k)
+            system.addDisc(pile.x[k], pile.y[k], pile.radius[k]);
         system.setGravity(Vec2(0, -9.81));
         system.setThreads(threads);
         system.sortSpatially();
         system.computeForces();
-        for (int s = 0; s < 200; ++s) system.step(result.dt); // warm caches and threads
+        for (int s = 0; s < 200; ++s)
+            system.step(result.dt); // warm caches and threads
         const long long rebuilds0 = system.rebuilds();
         std::vector<double> seconds;
         for (int r = 0; r < std::max(config.repeats, 1); ++r) {
             const auto start = Clock::now();
-            for (int s = 0; s < config.steps; ++s) system.step(result.dt);
+            for (int s = 0; s < config.steps; ++s)
+                system.step(result.dt);
             seconds.push_back(since(start));
         }
         std::sort(seconds.begin(), seconds.end());

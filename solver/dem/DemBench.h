@@ -12,12 +12,12 @@ namespace lbdem::solver::dem {
 
 /// What to measure. The contact law and sizes default to the paper's (docs/design.md §5b).
 struct DemBenchConfig {
-    int particles = 10000;          ///< discs in the pile
-    Real d_min = 1.2e-3;            ///< smallest diameter [m]
-    Real size_ratio = 1.8;          ///< d_max / d_min
-    Real aspect_ratio = 0.25;       ///< a wide, low pile: deposits quickly
-    Real dt_safety = 0.02;          ///< step as a fraction of the binary contact time (as in the plan)
-    Material material;              ///< contact law
+    int particles = 10000;    ///< discs in the pile
+    Real d_min = 1.2e-3;      ///< smallest diameter [m]
+    Real size_ratio = 1.8;    ///< d_max / d_min
+    Real aspect_ratio = 0.25; ///< a wide, low pile: deposits quickly
+    Real dt_safety = 0.02;    ///< step as a fraction of the binary contact time (as in the plan)
+    Material material;        ///< contact law
     std::vector<int> threads{1, 2}; ///< thread counts to measure
     int steps = 2000;               ///< steps per timed repeat
     int repeats = 3;                ///< timed repeats per thread count (median and best reported)
@@ -29,20 +29,20 @@ struct DemBenchRun {
     int threads = 0;
     std::size_t particles = 0;
     long long steps = 0;
-    double seconds = 0;              ///< of the median repeat
-    double particle_steps_per_s = 0; ///< median over the repeats
+    double seconds = 0;                   ///< of the median repeat
+    double particle_steps_per_s = 0;      ///< median over the repeats
     double best_particle_steps_per_s = 0; ///< fastest repeat (least disturbed by other load)
-    long long rebuilds = 0;     ///< neighbour-list rebuilds during the timed steps
-    std::size_t contacts = 0;   ///< touching contacts at the end
+    long long rebuilds = 0;               ///< neighbour-list rebuilds during the timed steps
+    std::size_t contacts = 0;             ///< touching contacts at the end
 };
 
 /// All runs plus how the pile was obtained.
 struct DemBenchResult {
     std::vector<DemBenchRun> runs;
-    double pile_seconds = 0;    ///< time to build (or read) the pile
+    double pile_seconds = 0; ///< time to build (or read) the pile
     bool pile_from_cache = false;
-    Real packing_fraction = 0;  ///< of the settled pile
-    Real dt = 0;                ///< DEM step used [s]
+    Real packing_fraction = 0; ///< of the settled pile
+    Real dt = 0;               ///< DEM step used [s]
 };
 
 /// Build (or read from the cache) a settled pile, sort it by cell for locality, and time

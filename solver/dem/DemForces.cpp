@@ -44,7 +44,8 @@ struct KernelView {
 };
 
 /// Forces of the pairs (i, j > i) of one row, each stored in its slot and load.
-inline void pairRow(const KernelView& v, std::size_t i, PairSlot* slot, PairSlot* end, PairLoad* load) {
+inline void pairRow(const KernelView& v, std::size_t i, PairSlot* slot, PairSlot* end,
+                    PairLoad* load) {
     const Real xi = v.x[i], yi = v.y[i], ri = v.r[i];
     for (; slot < end; ++slot, ++load) {
         PairSlot& s = *slot;
@@ -63,8 +64,8 @@ inline void pairRow(const KernelView& v, std::size_t i, PairSlot* slot, PairSlot
         const Real vt = -dvx * ny + dvy * nx - (ri * v.w[i] + v.r[j] * v.w[j]);
         const Real fn = v.kn * (reach - d) - s.gn * vn;
         Real roll = 0;
-        const Real ft = tangentialAndRolling(fn, vt, v.w[i] - v.w[j], v.dt, v.kt, s.gt, v.mu, s.reff, v.muRoll, s.ut,
-                                             s.ur, roll);
+        const Real ft = tangentialAndRolling(fn, vt, v.w[i] - v.w[j], v.dt, v.kt, s.gt, v.mu,
+                                             s.reff, v.muRoll, s.ut, s.ur, roll);
         s.fn = fn;
         s.ft = ft;
         load->fx = fn * nx - ft * ny; // force on j; i feels the opposite
@@ -96,8 +97,8 @@ inline void wallContact(const KernelView& v, WallSlot& s, const Wall& wall) {
     const Real vt = v.vx[i] * ny - v.vy[i] * nx - ri * v.w[i];
     const Real fn = v.kn * (ri - d) - s.gn * vn;
     Real roll = 0;
-    const Real ft =
-        tangentialAndRolling(fn, vt, v.w[i], v.dt, v.kt, s.gt, v.muWall, ri, v.muRollWall, s.ut, s.ur, roll);
+    const Real ft = tangentialAndRolling(fn, vt, v.w[i], v.dt, v.kt, s.gt, v.muWall, ri,
+                                         v.muRollWall, s.ut, s.ur, roll);
     s.fn = fn;
     s.ft = ft;
     s.fx = -(fn * nx - ft * ny);
@@ -110,9 +111,19 @@ inline void wallContact(const KernelView& v, WallSlot& s, const Wall& wall) {
 void DemSystem::contactKernel(Real dt, int threads) {
     const std::size_t n = m_p.size();
     // Velocities predicted at the end of the step, so that the dashpots see v(t + dt).
-    const KernelView view{m_p.x.data(), m_p.y.data(), m_vx.data(), m_vy.data(), m_w.data(), m_p.radius.data(),
-                          m_material.normal_stiffness, m_kt, m_material.friction, m_material.wall_friction,
-                          m_material.rolling_resistance, m_material.wall_rolling_resistance, dt};
+    const KernelView view{m_p.x.data(),
+                          m_p.y.data(),
+                          m_vx.data(),
+                          m_vy.data(),
+                          m_w.data(),
+                          m_p.radius.data(),
+                          m_material.normal_stiffness,
+                          m_kt,
+                          m_material.friction,
+                          m_material.wall_friction,
+                          m_material.rolling_resistance,
+                          m_material.wall_rolling_resistance,
+                          dt};
     const std::uint32_t* start = m_rows.start.data();
     PairSlot* slots = m_slots.data();
     PairLoad* loads = m_loads.data();
@@ -180,8 +191,10 @@ void DemSystem::buildIncoming() {
     // Counting sort of the slots by partner j; a stable pass keeps each group in increasing i.
     const std::size_t n = m_p.size();
     m_inStart.assign(n + 2, 0);
-    for (const PairSlot& s : m_slots) ++m_inStart[s.j + 2];
-    for (std::size_t j = 0; j < n; ++j) m_inStart[j + 2] += m_inStart[j + 1];
+    for (const PairSlot& s : m_slots)
+        ++m_inStart[s.j + 2];
+    for (std::size_t j = 0; j < n; ++j)
+        m_inStart[j + 2] += m_inStart[j + 1];
     // m_inStart[j + 1] is now where group j starts; filling advances it to where j ends, which
     // is where group j + 1 starts: m_inStart[0 .. n] ends up as the group starts.
     m_inSlots.resize(m_slots.size());

@@ -16,7 +16,8 @@ std::vector<ContactForce> DemSystem::contacts() const {
             const Real dx = m_p.x[s.j] - m_p.x[i], dy = m_p.y[s.j] - m_p.y[i];
             const Real d = std::max(std::sqrt(dx * dx + dy * dy), Real(1e-300));
             const Real a = (ri + 0.5 * (d - ri - rj)) / d;
-            out.push_back({static_cast<std::int32_t>(i), s.j, s.fn, s.ft, m_p.x[i] + a * dx, m_p.y[i] + a * dy});
+            out.push_back({static_cast<std::int32_t>(i), s.j, s.fn, s.ft, m_p.x[i] + a * dx,
+                           m_p.y[i] + a * dy});
         }
     }
     for (const WallSlot& s : m_wallSlots)
@@ -40,7 +41,8 @@ std::vector<ContactHistory> DemSystem::contactHistory() const {
 void DemSystem::restoreContactHistory(const std::vector<ContactHistory>& history) {
     const std::size_t n = m_p.size();
     std::vector<ContactHistory> pairs, walls;
-    for (const ContactHistory& h : history) (h.is_wall ? walls : pairs).push_back(h);
+    for (const ContactHistory& h : history)
+        (h.is_wall ? walls : pairs).push_back(h);
     auto byIndex = [](const ContactHistory& a, const ContactHistory& b) {
         return a.i < b.i || (a.i == b.i && a.j < b.j);
     };
@@ -56,7 +58,8 @@ void DemSystem::restoreContactHistory(const std::vector<ContactHistory>& history
         m_oldSlots.push_back(s);
         ++m_oldStart[h.i + 1];
     }
-    for (std::size_t i = 0; i < n; ++i) m_oldStart[i + 1] += m_oldStart[i];
+    for (std::size_t i = 0; i < n; ++i)
+        m_oldStart[i + 1] += m_oldStart[i];
     m_oldWallSlots.clear();
     for (const ContactHistory& h : walls) {
         WallSlot s;
@@ -74,12 +77,14 @@ void DemSystem::restoreContactHistory(const std::vector<ContactHistory>& history
 std::vector<std::int32_t> DemSystem::sortSpatially() {
     const std::size_t n = m_p.size();
     Real rmax = 0;
-    for (Real r : m_p.radius) rmax = std::max(rmax, r);
+    for (Real r : m_p.radius)
+        rmax = std::max(rmax, r);
     NeighbourGrid grid;
     grid.build(m_p.x.data(), m_p.y.data(), n, 2 * rmax);
     const std::vector<std::int32_t> order = grid.cellOrder();
     std::vector<std::int32_t> newIndex(n);
-    for (std::size_t k = 0; k < n; ++k) newIndex[order[k]] = static_cast<std::int32_t>(k);
+    for (std::size_t k = 0; k < n; ++k)
+        newIndex[order[k]] = static_cast<std::int32_t>(k);
     std::vector<ContactHistory> history = contactHistory();
     for (ContactHistory& h : history) {
         h.i = newIndex[h.i];
@@ -93,7 +98,8 @@ std::vector<std::int32_t> DemSystem::sortSpatially() {
     }
     std::vector<Real> tmp(n);
     for (std::vector<Real>* a : m_p.arrays()) {
-        for (std::size_t k = 0; k < n; ++k) tmp[k] = (*a)[order[k]];
+        for (std::size_t k = 0; k < n; ++k)
+            tmp[k] = (*a)[order[k]];
         a->swap(tmp);
     }
     m_refX.clear();

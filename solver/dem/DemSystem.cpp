@@ -56,7 +56,8 @@ void DemSystem::setMaterial(const Material& material) {
             m_p.inertia[i] = m_p.mass[i] * m_p.radius[i] * m_p.radius[i] / 2;
         }
     }
-    // Keep tangential and rolling forces continuous: the springs' elongations scale by k_old / k_new.
+    // Keep tangential and rolling forces continuous: the springs' elongations scale by k_old /
+    // k_new.
     const Real scale = m_material.tangential_stiffness / material.tangential_stiffness;
     if (scale != 1) {
         for (PairSlot& s : m_slots) {
@@ -72,7 +73,9 @@ void DemSystem::setMaterial(const Material& material) {
     m_rebuild = true;
 }
 
-int DemSystem::threadCount() const { return m_threads > 0 ? m_threads : ompMaxThreads(); }
+int DemSystem::threadCount() const {
+    return m_threads > 0 ? m_threads : ompMaxThreads();
+}
 
 void DemSystem::step(Real dt) {
     const std::size_t n = m_p.size();
@@ -117,7 +120,8 @@ void DemSystem::step(Real dt) {
 
 void DemSystem::advance(Real dt, int substeps) {
     const int n = std::max(substeps, 1);
-    for (int s = 0; s < n; ++s) step(dt / n);
+    for (int s = 0; s < n; ++s)
+        step(dt / n);
 }
 
 void DemSystem::resizePredicted() {
@@ -180,7 +184,8 @@ void DemSystem::mergeHistory() {
             PairSlot& s = m_slots[k];
             s = PairSlot{};
             s.j = j;
-            while (o < oEnd && m_oldSlots[o].j < j) ++o;
+            while (o < oEnd && m_oldSlots[o].j < j)
+                ++o;
             if (o < oEnd && m_oldSlots[o].j == j) {
                 s.ut = m_oldSlots[o].ut;
                 s.ur = m_oldSlots[o].ur;
@@ -210,17 +215,22 @@ void DemSystem::buildWallSlots() {
         for (std::size_t w = 0; w < m_walls.size(); ++w) {
             if (!m_walls[w].active) continue;
             const Vec2 ab = m_walls[w].b - m_walls[w].a;
-            const Real t = std::clamp((c - m_walls[w].a).dot(ab) / std::max(ab.squaredNorm(), Real(1e-300)),
-                                      Real(0), Real(1));
+            const Real t =
+                std::clamp((c - m_walls[w].a).dot(ab) / std::max(ab.squaredNorm(), Real(1e-300)),
+                           Real(0), Real(1));
             const Vec2 p = m_walls[w].a + t * ab;
             const Real reach = m_p.radius[i] + m_skin;
             if ((p - c).squaredNorm() >= reach * reach) continue;
             WallSlot s;
             s.i = static_cast<std::int32_t>(i);
             s.wall = static_cast<std::int32_t>(w);
-            auto before = [&](const WallSlot& a) { return a.i < s.i || (a.i == s.i && a.wall < s.wall); };
-            while (o < m_oldWallSlots.size() && before(m_oldWallSlots[o])) ++o;
-            if (o < m_oldWallSlots.size() && m_oldWallSlots[o].i == s.i && m_oldWallSlots[o].wall == s.wall) {
+            auto before = [&](const WallSlot& a) {
+                return a.i < s.i || (a.i == s.i && a.wall < s.wall);
+            };
+            while (o < m_oldWallSlots.size() && before(m_oldWallSlots[o]))
+                ++o;
+            if (o < m_oldWallSlots.size() && m_oldWallSlots[o].i == s.i &&
+                m_oldWallSlots[o].wall == s.wall) {
                 s.ut = m_oldWallSlots[o].ut;
                 s.ur = m_oldWallSlots[o].ur;
                 s.fn = m_oldWallSlots[o].fn;

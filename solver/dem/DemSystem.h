@@ -1,4 +1,5 @@
-// A system of discs and wall segments advanced by velocity Verlet with a spring-dashpot contact law.
+// A system of discs and wall segments advanced by velocity Verlet with a spring-dashpot contact
+// law.
 #pragma once
 
 #include "solver/core/Real.h"
@@ -22,13 +23,13 @@ struct Wall {
 /// A candidate pair (i, j > i) with its contact history; fn, ft are zero when not touching.
 struct PairSlot {
     std::int32_t j = 0;
-    Real ut = 0;    ///< tangential spring elongation [m]
-    Real ur = 0;    ///< rolling spring rotation [rad]
-    Real gn = 0;    ///< normal dashpot coefficient of this pair [kg/s per m]
-    Real gt = 0;    ///< tangential dashpot coefficient [kg/s per m]
-    Real reff = 0;  ///< R_i R_j / (R_i + R_j) [m]
-    Real fn = 0;    ///< normal force of the last evaluation, repulsive positive [N/m]
-    Real ft = 0;    ///< tangential force on j along t = (-n_y, n_x) [N/m]
+    Real ut = 0;   ///< tangential spring elongation [m]
+    Real ur = 0;   ///< rolling spring rotation [rad]
+    Real gn = 0;   ///< normal dashpot coefficient of this pair [kg/s per m]
+    Real gt = 0;   ///< tangential dashpot coefficient [kg/s per m]
+    Real reff = 0; ///< R_i R_j / (R_i + R_j) [m]
+    Real fn = 0;   ///< normal force of the last evaluation, repulsive positive [N/m]
+    Real ft = 0;   ///< tangential force on j along t = (-n_y, n_x) [N/m]
 };
 
 /// What one pair's contact of the last evaluation does to its two discs (zero when not touching).
@@ -43,7 +44,7 @@ struct WallSlot {
     Real ut = 0, ur = 0, gn = 0, gt = 0;
     Real fn = 0, ft = 0;
     Real fx = 0, fy = 0, torque = 0; ///< force and torque on the disc of the last evaluation
-    Real px = 0, py = 0; ///< closest point on the wall [m]
+    Real px = 0, py = 0;             ///< closest point on the wall [m]
 };
 
 /// One touching contact for reports and snapshots (j = -1: a wall, point in px, py).
@@ -110,7 +111,10 @@ public:
     Real time() const { return m_time; }
     long long stepCount() const { return m_steps; }
     /// Set the clock (checkpoint restore).
-    void setClock(Real time, long long steps) { m_time = time; m_steps = steps; }
+    void setClock(Real time, long long steps) {
+        m_time = time;
+        m_steps = steps;
+    }
 
     /// Touching contacts with force magnitudes (allocates: call between steps).
     std::vector<ContactForce> contacts() const;
@@ -155,13 +159,14 @@ private:
     std::vector<PairSlot> m_oldSlots;
     std::vector<WallSlot> m_wallSlots, m_oldWallSlots; ///< sorted by (disc, wall)
     std::vector<std::uint32_t> m_wallStart; ///< wall slots of disc i: [m_wallStart[i], [i + 1])
-    std::vector<Real> m_refX, m_refY;      ///< positions at the last rebuild
-    std::vector<Real> m_vx, m_vy, m_w;     ///< velocities predicted at the end of the step
-    std::vector<std::uint32_t> m_inStart;  ///< slots with partner j: m_inSlots[m_inStart[j] .. [j + 1])
-    std::vector<std::uint32_t> m_inSlots;  ///< slot indices grouped by partner j, in increasing i
+    std::vector<Real> m_refX, m_refY;       ///< positions at the last rebuild
+    std::vector<Real> m_vx, m_vy, m_w;      ///< velocities predicted at the end of the step
+    std::vector<std::uint32_t>
+        m_inStart; ///< slots with partner j: m_inSlots[m_inStart[j] .. [j + 1])
+    std::vector<std::uint32_t> m_inSlots; ///< slot indices grouped by partner j, in increasing i
     bool m_rebuild = true;
     bool m_haveOld = false;
-    bool m_restorePending = false;         ///< m_old* hold restored history to merge
+    bool m_restorePending = false; ///< m_old* hold restored history to merge
     long long m_rebuildCount = 0;
     int m_threads = 0;
     Real m_time = 0;

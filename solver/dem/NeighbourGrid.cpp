@@ -27,7 +27,8 @@ void sortRow(std::int32_t* begin, std::int32_t* end) {
 } // namespace
 
 void NeighbourGrid::reserve(std::size_t n) {
-    m_cellStart.reserve(static_cast<std::size_t>(kMaxCellsPerDisc * static_cast<double>(n) + 64) + 1);
+    m_cellStart.reserve(static_cast<std::size_t>(kMaxCellsPerDisc * static_cast<double>(n) + 64) +
+                        1);
     m_items.reserve(n);
     m_cellOf.reserve(n);
 }
@@ -46,7 +47,9 @@ void NeighbourGrid::build(const Real* x, const Real* y, std::size_t n, Real cell
     }
     Real size = cellSize;
     const double maxCells = kMaxCellsPerDisc * static_cast<double>(n) + 64;
-    while ((std::floor((xmax - xmin) / size) + 1) * (std::floor((ymax - ymin) / size) + 1) > maxCells) size *= 2;
+    while ((std::floor((xmax - xmin) / size) + 1) * (std::floor((ymax - ymin) / size) + 1) >
+           maxCells)
+        size *= 2;
     m_inv = 1 / size;
     m_x0 = xmin;
     m_y0 = ymin;
@@ -62,15 +65,19 @@ void NeighbourGrid::build(const Real* x, const Real* y, std::size_t n, Real cell
         m_cellOf[i] = cy * m_nx + cx;
         ++m_cellStart[m_cellOf[i] + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c) m_cellStart[c + 1] += m_cellStart[c];
+    for (std::size_t c = 0; c < cells; ++c)
+        m_cellStart[c + 1] += m_cellStart[c];
     // Fill each cell in increasing disc index (stable counting sort).
     std::vector<std::uint32_t>& fill = m_cellStart; // reuse: shift back afterwards
-    for (std::size_t i = 0; i < n; ++i) m_items[fill[m_cellOf[i]]++] = static_cast<std::int32_t>(i);
-    for (std::size_t c = cells; c > 0; --c) fill[c] = fill[c - 1];
+    for (std::size_t i = 0; i < n; ++i)
+        m_items[fill[m_cellOf[i]]++] = static_cast<std::int32_t>(i);
+    for (std::size_t c = cells; c > 0; --c)
+        fill[c] = fill[c - 1];
     fill[0] = 0;
 }
 
-void NeighbourGrid::pairs(const Real* x, const Real* y, const Real* r, Real skin, PairRows& rows) const {
+void NeighbourGrid::pairs(const Real* x, const Real* y, const Real* r, Real skin,
+                          PairRows& rows) const {
     const std::size_t n = m_cellOf.size();
     rows.start.resize(n + 1);
     rows.cols.clear();
@@ -93,13 +100,15 @@ void NeighbourGrid::pairs(const Real* x, const Real* y, const Real* r, Real skin
     }
 }
 
-void bruteForcePairs(const Real* x, const Real* y, const Real* r, std::size_t n, Real skin, PairRows& rows) {
+void bruteForcePairs(const Real* x, const Real* y, const Real* r, std::size_t n, Real skin,
+                     PairRows& rows) {
     rows.start.assign(n + 1, 0);
     rows.cols.clear();
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t j = i + 1; j < n; ++j) {
             const Real dx = x[j] - x[i], dy = y[j] - y[i], reach = r[i] + r[j] + skin;
-            if (dx * dx + dy * dy < reach * reach) rows.cols.push_back(static_cast<std::int32_t>(j));
+            if (dx * dx + dy * dy < reach * reach)
+                rows.cols.push_back(static_cast<std::int32_t>(j));
         }
         rows.start[i + 1] = static_cast<std::uint32_t>(rows.cols.size());
     }

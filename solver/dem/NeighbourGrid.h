@@ -19,7 +19,8 @@ struct PairRows {
 /// A uniform grid of square cells over the bounding box of the discs.
 class NeighbourGrid {
 public:
-    /// Reserve room for n discs (and the most cells the grid uses for them) so builds do not allocate.
+    /// Reserve room for n discs (and the most cells the grid uses for them) so builds do not
+    /// allocate.
     void reserve(std::size_t n);
 
     /// Bin n discs into cells of side cellSize (at least the largest contact distance).
@@ -37,12 +38,14 @@ public:
 private:
     int m_nx = 0, m_ny = 0;
     Real m_x0 = 0, m_y0 = 0, m_inv = 1;
-    std::vector<std::uint32_t> m_cellStart; ///< items of cell c are m_items[m_cellStart[c] .. [c + 1])
+    std::vector<std::uint32_t>
+        m_cellStart; ///< items of cell c are m_items[m_cellStart[c] .. [c + 1])
     std::vector<std::int32_t> m_items;
     std::vector<std::int32_t> m_cellOf;
 };
 
 /// Reference O(N^2) pair search with the same contract as NeighbourGrid::pairs (for tests).
-void bruteForcePairs(const Real* x, const Real* y, const Real* r, std::size_t n, Real skin, PairRows& rows);
+void bruteForcePairs(const Real* x, const Real* y, const Real* r, std::size_t n, Real skin,
+                     PairRows& rows);
 
 } // namespace lbdem::solver::dem

@@ -19,7 +19,8 @@ namespace {
 // Deposition runs with contacts 10 times softer (3.2 times longer contacts, so 3.2 times fewer
 // steps); the final relaxation with the real stiffness removes the extra overlap (~0.5 % of d).
 constexpr Real kSoften = 10;
-constexpr Real kPrepRestitution = 0.5; // explicit tangential dashpots of many sticking contacts limit the damping
+constexpr Real kPrepRestitution =
+    0.5; // explicit tangential dashpots of many sticking contacts limit the damping
 constexpr Real kPrepStepFraction = 0.05; // deposition step as a fraction of the contact time
 constexpr Real kRelaxStepFraction = 0.05;
 constexpr Real kMaxPrepFriction = 1.0;
@@ -29,11 +30,14 @@ constexpr int kRelaxStages = 8;
 constexpr int kRelaxStageSteps = 400;
 
 /// Uniform number in [0, 1) from the top 53 bits: identical on every standard library.
-Real uniform(std::mt19937_64& rng) { return static_cast<Real>(rng() >> 11) * 0x1.0p-53; }
+Real uniform(std::mt19937_64& rng) {
+    return static_cast<Real>(rng() >> 11) * 0x1.0p-53;
+}
 
 std::vector<Real> drawRadii(const PackingRequest& req, std::mt19937_64& rng) {
     std::vector<Real> r(req.count);
-    for (Real& ri : r) ri = 0.5 * req.d_min * (1 + (req.size_ratio - 1) * uniform(rng));
+    for (Real& ri : r)
+        ri = 0.5 * req.d_min * (1 + (req.size_ratio - 1) * uniform(rng));
     return r;
 }
 
@@ -66,9 +70,11 @@ Layout looseLattice(const std::vector<Real>& radii, Real width, std::mt19937_64&
 void settle(DemSystem& system, Real dt, Real tMin, Real tMax, Real vTol) {
     const Real t0 = system.time();
     Real totalMass = 0;
-    for (Real m : system.particles().mass) totalMass += m;
+    for (Real m : system.particles().mass)
+        totalMass += m;
     while (system.time() - t0 < tMax) {
-        for (int k = 0; k < 200; ++k) system.step(dt);
+        for (int k = 0; k < 200; ++k)
+            system.step(dt);
         const Real rms = std::sqrt(2 * system.kineticEnergy() / totalMass);
         if (system.time() - t0 > tMin && rms < vTol) return;
     }
@@ -76,7 +82,8 @@ void settle(DemSystem& system, Real dt, Real tMin, Real tMax, Real vTol) {
 
 /// Raise the contact stiffness from the deposition value to the run's in geometric stages:
 /// a sudden jump would release the soft overlaps' energy at once and loosen the column.
-void relaxToRunStiffness(DemSystem& system, const PackingRequest& req, const Material& prep, Real fall, Real vTol) {
+void relaxToRunStiffness(DemSystem& system, const PackingRequest& req, const Material& prep,
+                         Real fall, Real vTol) {
     const Real lightest = discMass(req.d_min / 2, prep.density);
     // The floor and torque options act from the release on: the column is prepared with the
     // grains' own rolling resistance on the walls and torque-carrying contacts whatever they are,
@@ -89,10 +96,13 @@ void relaxToRunStiffness(DemSystem& system, const PackingRequest& req, const Mat
         stage.normal_stiffness = req.material.normal_stiffness * scale;
         stage.tangential_stiffness = req.material.tangential_stiffness * scale;
         system.setMaterial(stage);
-        const Real dt = kRelaxStepFraction * contactDuration(stage.normal_stiffness, lightest / 2, stage.restitution);
-        for (int s = 0; s < kRelaxStageSteps; ++s) system.step(dt);
+        const Real dt = kRelaxStepFraction *
+                        contactDuration(stage.normal_stiffness, lightest / 2, stage.restitution);
+        for (int s = 0; s < kRelaxStageSteps; ++s)
+            system.step(dt);
     }
-    const Real dt = kRelaxStepFraction * contactDuration(stage.normal_stiffness, lightest / 2, stage.restitution);
+    const Real dt = kRelaxStepFraction *
+                    contactDuration(stage.normal_stiffness, lightest / 2, stage.restitution);
     settle(system, dt, 0, 2 * fall, vTol);
 }
 
@@ -101,8 +111,8 @@ struct Deposit {
     Real fraction = 0, height = 0;
 };
 
-Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const Layout& start, Real width,
-                Real friction, bool relax) {
+Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const Layout& start,
+                Real width, Real friction, bool relax) {
     Material prep = req.material;
     prep.normal_stiffness /= kSoften;
     prep.tangential_stiffness /= kSoften;
@@ -126,7 +136,8 @@ Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const
     system.setGravity(Vec2(0, -req.gravity));
     system.computeForces();
     const Real lightest = discMass(req.d_min / 2, prep.density);
-    const Real dt = kPrepStepFraction * contactDuration(prep.normal_stiffness, lightest / 2, prep.restitution);
+    const Real dt =
+        kPrepStepFraction * contactDuration(prep.normal_stiffness, lightest / 2, prep.restitution);
     const Real vTol = 1e-3 * std::sqrt(req.gravity * req.d_min);
     const Real fall = std::sqrt(2 * top / req.gravity);
     settle(system, dt, fall, 20 * fall, vTol);
@@ -139,8 +150,8 @@ Deposit deposit(const PackingRequest& req, const std::vector<Real>& radii, const
 }
 
 /// Deposition friction whose soft deposit is closest to aim (bracketed by the two end deposits).
-Real searchFriction(const PackingRequest& req, Packing& packing, const Layout& lattice, Real aim, Deposit dLo,
-                    Deposit dHi) {
+Real searchFriction(const PackingRequest& req, Packing& packing, const Layout& lattice, Real aim,
+                    Deposit dLo, Deposit dHi) {
     Real lo = 0, hi = kMaxPrepFriction, mu = 0;
     Real bestError = std::abs(dLo.fraction - aim);
     if (std::abs(dHi.fraction - aim) < bestError) {
@@ -150,7 +161,8 @@ Real searchFriction(const PackingRequest& req, Packing& packing, const Layout& l
     if (dLo.fraction < aim || dHi.fraction > aim) return mu; // out of reach: the closest end
     const Real searchTol = 0.4 * req.tolerance; // leave room for the shift on relaxation
     while (bestError > searchTol && packing.depositions < kMaxDepositions) {
-        const Real t = std::clamp((dLo.fraction - aim) / (dLo.fraction - dHi.fraction), Real(0.15), Real(0.85));
+        const Real t = std::clamp((dLo.fraction - aim) / (dLo.fraction - dHi.fraction), Real(0.15),
+                                  Real(0.85));
         const Real m = lo + t * (hi - lo);
         const Deposit d = deposit(req, packing.radius, lattice, packing.width, m, false);
         ++packing.depositions;
@@ -171,7 +183,8 @@ Real searchFriction(const PackingRequest& req, Packing& packing, const Layout& l
 
 /// Complete a packing from its final deposit, time it and cache it when asked.
 Packing finish(Packing& packing, const Deposit& final, Real mu, int depositions,
-               std::chrono::steady_clock::time_point start, bool cache, const std::string& path, bool converged) {
+               std::chrono::steady_clock::time_point start, bool cache, const std::string& path,
+               bool converged) {
     packing.x = final.x;
     packing.y = final.y;
     packing.fraction = final.fraction;
@@ -179,14 +192,16 @@ Packing finish(Packing& packing, const Deposit& final, Real mu, int depositions,
     packing.prep_friction = mu;
     packing.depositions = depositions;
     packing.converged = converged;
-    packing.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    packing.wall_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (cache) writeCachedPacking(path, packing);
     return packing;
 }
 
 } // namespace
 
-Real packingFraction(const std::vector<Real>& y, const std::vector<Real>& r, Real width, Real& height) {
+Real packingFraction(const std::vector<Real>& y, const std::vector<Real>& r, Real width,
+                     Real& height) {
     Real area = 0, moment = 0;
     for (std::size_t k = 0; k < r.size(); ++k) {
         const Real a = kPi * r[k] * r[k];
@@ -198,10 +213,12 @@ Real packingFraction(const std::vector<Real>& y, const std::vector<Real>& r, Rea
 }
 
 Packing generatePacking(const PackingRequest& req, const PackingOptions& options) {
-    if (req.count < 1 || req.d_min <= 0 || req.size_ratio < 1 || req.target <= 0 || req.target >= 0.9)
-        throw InputError("cannot generate a packing of " + std::to_string(req.count) + " discs at fraction " +
-                         std::to_string(req.target));
-    const std::string dir = options.cache_dir.empty() ? defaultPackingCacheDir() : options.cache_dir;
+    if (req.count < 1 || req.d_min <= 0 || req.size_ratio < 1 || req.target <= 0 ||
+        req.target >= 0.9)
+        throw InputError("cannot generate a packing of " + std::to_string(req.count) +
+                         " discs at fraction " + std::to_string(req.target));
+    const std::string dir =
+        options.cache_dir.empty() ? defaultPackingCacheDir() : options.cache_dir;
     const std::string path = dir + "/packing-" + packingCacheKey(req) + ".txt";
     Packing packing;
     if (options.use_cache && readCachedPacking(path, packing)) {
@@ -212,14 +229,17 @@ Packing generatePacking(const PackingRequest& req, const PackingOptions& options
     std::mt19937_64 rng(req.seed);
     packing.radius = drawRadii(req, rng);
     Real area = 0;
-    for (Real r : packing.radius) area += kPi * r * r;
+    for (Real r : packing.radius)
+        area += kPi * r * r;
     packing.width = std::sqrt(area / (req.aspect_ratio * req.target));
     packing.target = req.target;
     const Layout lattice = looseLattice(packing.radius, packing.width, rng);
 
     if (req.fixed_friction) {
-        const Deposit once = deposit(req, packing.radius, lattice, packing.width, req.material.friction, true);
-        return finish(packing, once, req.material.friction, 1, start, options.use_cache, path, true);
+        const Deposit once =
+            deposit(req, packing.radius, lattice, packing.width, req.material.friction, true);
+        return finish(packing, once, req.material.friction, 1, start, options.use_cache, path,
+                      true);
     }
     // Regula falsi on the deposition friction (the settled fraction falls as friction rises),
     // on the soft deposits; the stiff relaxation shifts the fraction a little, so a second
@@ -238,7 +258,8 @@ Packing generatePacking(const PackingRequest& req, const PackingOptions& options
         aim += req.target - final.fraction;
     }
     const bool converged = std::abs(final.fraction - req.target) <= req.tolerance;
-    return finish(packing, final, mu, packing.depositions, start, options.use_cache && converged, path, converged);
+    return finish(packing, final, mu, packing.depositions, start, options.use_cache && converged,
+                  path, converged);
 }
 
 } // namespace lbdem::solver::dem

@@ -12,30 +12,31 @@ namespace lbdem::solver::dem {
 
 /// What column to build. Diameters are uniform in [d_min, size_ratio d_min].
 struct PackingRequest {
-    int count = 1000;             ///< number of discs N
-    Real d_min = 1.2e-3;          ///< smallest diameter [m]
-    Real size_ratio = 1.8;        ///< d_max / d_min
-    Real target = 0.83;           ///< packing fraction to reach (dense 0.83, loose 0.79)
-    Real aspect_ratio = 0.8;      ///< a = H_i / L_i of the settled column
-    Real tolerance = 0.005;       ///< accepted |achieved - target|
-    Real gravity = 9.81;          ///< gravity during deposition [m/s^2], pointing to -y
-    Material material;            ///< the contact law of the run (used for the final relaxation)
-    std::uint64_t seed = 1;       ///< seed of the diameters and the initial placement
-    bool fixed_friction = false;  ///< deposit once with the material's friction, no search for target
+    int count = 1000;        ///< number of discs N
+    Real d_min = 1.2e-3;     ///< smallest diameter [m]
+    Real size_ratio = 1.8;   ///< d_max / d_min
+    Real target = 0.83;      ///< packing fraction to reach (dense 0.83, loose 0.79)
+    Real aspect_ratio = 0.8; ///< a = H_i / L_i of the settled column
+    Real tolerance = 0.005;  ///< accepted |achieved - target|
+    Real gravity = 9.81;     ///< gravity during deposition [m/s^2], pointing to -y
+    Material material;       ///< the contact law of the run (used for the final relaxation)
+    std::uint64_t seed = 1;  ///< seed of the diameters and the initial placement
+    bool fixed_friction =
+        false; ///< deposit once with the material's friction, no search for target
 };
 
 /// A settled column resting on y = 0 between walls at x = 0 and x = width.
 struct Packing {
     std::vector<Real> x, y, radius;
-    Real width = 0;          ///< L_i, the distance between the side walls [m]
-    Real height = 0;         ///< H_i, equivalent column height (see packingFraction) [m]
-    Real fraction = 0;       ///< achieved packing fraction (see packingFraction)
-    Real target = 0;         ///< requested fraction
-    Real prep_friction = 0;  ///< friction coefficient used during deposition
-    int depositions = 0;     ///< deposition runs the search needed
-    double wall_s = 0;       ///< generation time (0 when read from the cache)
+    Real width = 0;         ///< L_i, the distance between the side walls [m]
+    Real height = 0;        ///< H_i, equivalent column height (see packingFraction) [m]
+    Real fraction = 0;      ///< achieved packing fraction (see packingFraction)
+    Real target = 0;        ///< requested fraction
+    Real prep_friction = 0; ///< friction coefficient used during deposition
+    int depositions = 0;    ///< deposition runs the search needed
+    double wall_s = 0;      ///< generation time (0 when read from the cache)
     bool from_cache = false;
-    bool converged = false;  ///< |fraction - target| <= tolerance
+    bool converged = false; ///< |fraction - target| <= tolerance
 };
 
 /// Where generated packings are cached and whether to use the cache.
@@ -58,7 +59,8 @@ Packing generatePacking(const PackingRequest& request, const PackingOptions& opt
 /// where H is twice the area-weighted mean height of the discs, i.e. the height of the uniform
 /// rectangle with the same area centroid. Unlike the highest disc tops, H does not jump when a
 /// single disc sits proud of the surface. Returns the fraction and writes H to height.
-Real packingFraction(const std::vector<Real>& y, const std::vector<Real>& r, Real width, Real& height);
+Real packingFraction(const std::vector<Real>& y, const std::vector<Real>& r, Real width,
+                     Real& height);
 
 /// Cache folder: $LBDEM_CACHE_DIR, else $XDG_CACHE_HOME/lbdem, else $HOME/.cache/lbdem.
 std::string defaultPackingCacheDir();

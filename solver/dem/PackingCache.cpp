@@ -24,8 +24,10 @@ std::string hexFloat(Real v) {
 
 std::string defaultPackingCacheDir() {
     if (const char* dir = std::getenv("LBDEM_CACHE_DIR"); dir && *dir) return dir;
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/lbdem";
-    if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/lbdem";
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+        return std::string(xdg) + "/lbdem";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::string(home) + "/.cache/lbdem";
     return (std::filesystem::temp_directory_path() / "lbdem-cache").string();
 }
 
@@ -33,9 +35,9 @@ std::string packingCacheKey(const PackingRequest& r) {
     const Material& m = r.material;
     std::ostringstream text;
     text << kGeneratorVersion << ' ' << r.count << ' ' << r.seed << ' ' << r.fixed_friction;
-    for (Real v : {r.d_min, r.size_ratio, r.target, r.aspect_ratio, r.tolerance, r.gravity, m.normal_stiffness,
-                   m.tangential_stiffness, m.restitution, m.friction, m.wall_friction, m.rolling_resistance,
-                   m.density})
+    for (Real v : {r.d_min, r.size_ratio, r.target, r.aspect_ratio, r.tolerance, r.gravity,
+                   m.normal_stiffness, m.tangential_stiffness, m.restitution, m.friction,
+                   m.wall_friction, m.rolling_resistance, m.density})
         text << ' ' << hexFloat(v);
     // 64-bit FNV-1a of the parameter text.
     std::uint64_t hash = 0xcbf29ce484222325ULL;
@@ -61,8 +63,8 @@ bool readCachedPacking(const std::string& path, Packing& p) {
         return true;
     };
     Real converged = 0, depositions = 0;
-    if (!(real(p.width) && real(p.height) && real(p.fraction) && real(p.target) && real(p.prep_friction) &&
-          real(depositions) && real(converged)))
+    if (!(real(p.width) && real(p.height) && real(p.fraction) && real(p.target) &&
+          real(p.prep_friction) && real(depositions) && real(converged)))
         return false;
     p.depositions = static_cast<int>(depositions);
     p.converged = converged != 0;
@@ -84,11 +86,12 @@ bool writeCachedPacking(const std::string& path, const Packing& p) {
         std::ofstream out(partial);
         if (!out) return false;
         out << "lbdem-packing " << p.x.size() << '\n';
-        for (Real v : {p.width, p.height, p.fraction, p.target, p.prep_friction, Real(p.depositions),
-                       Real(p.converged ? 1 : 0)})
+        for (Real v : {p.width, p.height, p.fraction, p.target, p.prep_friction,
+                       Real(p.depositions), Real(p.converged ? 1 : 0)})
             out << hexFloat(v) << '\n';
         for (std::size_t k = 0; k < p.x.size(); ++k)
-            out << hexFloat(p.x[k]) << ' ' << hexFloat(p.y[k]) << ' ' << hexFloat(p.radius[k]) << '\n';
+            out << hexFloat(p.x[k]) << ' ' << hexFloat(p.y[k]) << ' ' << hexFloat(p.radius[k])
+                << '\n';
         if (!out) return false;
     }
     std::filesystem::rename(partial, path, error);

@@ -1,4 +1,5 @@
-// Runout of the main mass, energies, outline, packing and the Froude number of the flowing front layer.
+// Runout of the main mass, energies, outline, packing and the Froude number of the flowing front
+// layer.
 #include "solver/diagnostics/MassDiagnostics.h"
 #include "solver/core/Constants.h"
 
@@ -8,7 +9,6 @@
 namespace lbdem::solver {
 
 namespace {
-
 
 /// Upper surface of the main mass per column of width bin; returns the heights per column.
 std::vector<double> surfaceHeights(const GrainArrays& g, const std::vector<bool>& main, double bin,
@@ -33,9 +33,10 @@ std::vector<double> surfaceHeights(const GrainArrays& g, const std::vector<bool>
 /// move downslope at least flowing_fraction times as fast as the window's fastest disc (the
 /// sliding mass, not the resting flank or deposit the window may still span). U is the layer's
 /// mean downslope velocity; in each column of width bin_width_m across the window that holds
-/// layer discs (by centre) the layer spans from its lowest disc bottom to its highest disc top, H is the mean of those spans, and
-/// the layer's packing fraction phi is its discs' area over the area of those spans, so
-/// rho_m = phi rho_s + (1 - phi) rho_w and Fr_d = U / sqrt((rho_m / rho_w - 1) g H cos theta).
+/// layer discs (by centre) the layer spans from its lowest disc bottom to its highest disc top, H
+/// is the mean of those spans, and the layer's packing fraction phi is its discs' area over the
+/// area of those spans, so rho_m = phi rho_s + (1 - phi) rho_w and Fr_d = U / sqrt((rho_m / rho_w -
+/// 1) g H cos theta).
 void frontLayer(const GrainArrays& g, const std::vector<bool>& main, const MassDiagnosticsParams& p,
                 MassDiagnostics& d) {
     const double back = d.front_x_m - p.front_length_m;
@@ -50,7 +51,8 @@ void frontLayer(const GrainArrays& g, const std::vector<bool>& main, const MassD
     std::size_t flowing = 0;
     for (std::size_t i = 0; i < g.count; ++i) {
         if (!main[i] || g.x[i] <= back || g.vx[i] < threshold) continue;
-        const auto c = std::min(columns - 1, static_cast<std::size_t>((g.x[i] - back) / p.bin_width_m));
+        const auto c =
+            std::min(columns - 1, static_cast<std::size_t>((g.x[i] - back) / p.bin_width_m));
         bottom[c] = std::min(bottom[c], double(g.y[i] - g.radius[i]));
         top[c] = std::max(top[c], double(g.y[i] + g.radius[i]));
         sumVelocity += g.vx[i];
@@ -68,7 +70,8 @@ void frontLayer(const GrainArrays& g, const std::vector<bool>& main, const MassD
     if (p.fluid_density <= 0) return;
     const double phi = d.front_packing_fraction;
     const double mixture = phi * p.grain_density + (1 - phi) * p.fluid_density;
-    const double reduced = (mixture / p.fluid_density - 1) * p.gravity_m_s2 * d.front_thickness_m * std::cos(p.slope_rad);
+    const double reduced = (mixture / p.fluid_density - 1) * p.gravity_m_s2 * d.front_thickness_m *
+                           std::cos(p.slope_rad);
     d.froude_densimetric = reduced > 0 ? d.front_velocity_m_s / std::sqrt(reduced) : 0;
 }
 
@@ -76,7 +79,8 @@ void frontLayer(const GrainArrays& g, const std::vector<bool>& main, const MassD
 
 double potentialEnergy(const GrainArrays& g, double gravity) {
     double energy = 0;
-    for (std::size_t i = 0; i < g.count; ++i) energy += g.mass[i] * gravity * g.y[i];
+    for (std::size_t i = 0; i < g.count; ++i)
+        energy += g.mass[i] * gravity * g.y[i];
     return energy;
 }
 
@@ -86,7 +90,8 @@ MassDiagnostics computeMassDiagnostics(const GrainArrays& g, const MassDiagnosti
     for (std::size_t i = 0; i < g.count; ++i)
         d.kinetic_energy_j_m += 0.5 * g.mass[i] * (g.vx[i] * g.vx[i] + g.vy[i] * g.vy[i]) +
                                 0.5 * g.inertia[i] * g.omega[i] * g.omega[i];
-    d.ke_over_ep0 = p.initial_potential_j_m > 0 ? d.kinetic_energy_j_m / p.initial_potential_j_m : 0;
+    d.ke_over_ep0 =
+        p.initial_potential_j_m > 0 ? d.kinetic_energy_j_m / p.initial_potential_j_m : 0;
 
     const std::vector<bool> main = mainMass(g, p.contact_gap_m, p.bridge_gap_m);
     double grainArea = 0;
@@ -97,7 +102,8 @@ MassDiagnostics computeMassDiagnostics(const GrainArrays& g, const MassDiagnosti
         d.height_m = std::max(d.height_m, double(g.y[i] + g.radius[i]));
         grainArea += kPi * g.radius[i] * g.radius[i];
     }
-    d.runout_normalised = p.column_width_m > 0 ? (d.front_x_m - p.column_width_m) / p.column_width_m : 0;
+    d.runout_normalised =
+        p.column_width_m > 0 ? (d.front_x_m - p.column_width_m) / p.column_width_m : 0;
 
     const std::vector<double> top = surfaceHeights(g, main, p.bin_width_m, d.front_x_m);
     double areaUnder = 0;

@@ -1,4 +1,5 @@
-// Diagnostics of the granular mass (the paper's definitions): runout, energies, packing, Froude number, outline.
+// Diagnostics of the granular mass (the paper's definitions): runout, energies, packing, Froude
+// number, outline.
 #pragma once
 
 #include "solver/core/Real.h"
@@ -24,17 +25,18 @@ struct GrainArrays {
 
 /// Fixed parameters of the diagnostics of one run.
 struct MassDiagnosticsParams {
-    double contact_gap_m = 0;    ///< two discs touch when their gap is below this
-    double bridge_gap_m = 0;     ///< discs closer than this link one mass (at least contact_gap_m)
-    double column_width_m = 0;   ///< L_i, for Delta L = (L_f - L_i) / L_i
+    double contact_gap_m = 0;  ///< two discs touch when their gap is below this
+    double bridge_gap_m = 0;   ///< discs closer than this link one mass (at least contact_gap_m)
+    double column_width_m = 0; ///< L_i, for Delta L = (L_f - L_i) / L_i
     double initial_potential_j_m = 0; ///< E_p0, for E_k / E_p0
-    double slope_rad = 0;        ///< slope angle theta
-    double gravity_m_s2 = 9.81;  ///< |g|
-    double grain_density = 2650; ///< rho_s
-    double fluid_density = 0;    ///< rho_w; 0 in a dry scene (no Froude number)
-    double bin_width_m = 0;      ///< width of the outline columns (about one mean diameter)
-    double front_length_m = 0;   ///< length of the front window behind the front
-    double flowing_fraction = 0.1; ///< flowing: downslope speed >= this fraction of the window's fastest
+    double slope_rad = 0;             ///< slope angle theta
+    double gravity_m_s2 = 9.81;       ///< |g|
+    double grain_density = 2650;      ///< rho_s
+    double fluid_density = 0;         ///< rho_w; 0 in a dry scene (no Froude number)
+    double bin_width_m = 0;           ///< width of the outline columns (about one mean diameter)
+    double front_length_m = 0;        ///< length of the front window behind the front
+    double flowing_fraction =
+        0.1; ///< flowing: downslope speed >= this fraction of the window's fastest
 };
 
 /// What the diagnostics report at one instant.
@@ -48,8 +50,9 @@ struct MassDiagnostics {
     double froude_densimetric = 0; ///< U / sqrt((rho_m / rho_w - 1) g H cos theta); 0 when dry
     double front_velocity_m_s = 0; ///< U: mean downslope velocity of the flowing front layer
     double front_thickness_m = 0;  ///< H: mean thickness of the flowing front layer
-    double front_packing_fraction = 0; ///< grain area fraction of the flowing front layer (sets rho_m)
-    std::size_t main_mass_grains = 0; ///< discs of the main mass
+    double front_packing_fraction =
+        0; ///< grain area fraction of the flowing front layer (sets rho_m)
+    std::size_t main_mass_grains = 0;               ///< discs of the main mass
     std::vector<std::pair<double, double>> outline; ///< base -> upper surface -> front -> base
 };
 
@@ -66,6 +69,7 @@ double potentialEnergy(const GrainArrays& grains, double gravity);
 std::vector<bool> mainMass(const GrainArrays& grains, double contactGap, double bridgeGap);
 
 /// All diagnostics of the paper that depend on the grains alone.
-MassDiagnostics computeMassDiagnostics(const GrainArrays& grains, const MassDiagnosticsParams& params);
+MassDiagnostics computeMassDiagnostics(const GrainArrays& grains,
+                                       const MassDiagnosticsParams& params);
 
 } // namespace lbdem::solver

@@ -12,9 +12,12 @@ namespace {
 /// Union-find with path halving.
 class DisjointSets {
 public:
-    explicit DisjointSets(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), 0); }
+    explicit DisjointSets(std::size_t n) : m_parent(n) {
+        std::iota(m_parent.begin(), m_parent.end(), 0);
+    }
     std::size_t find(std::size_t i) {
-        while (m_parent[i] != i) i = m_parent[i] = m_parent[m_parent[i]];
+        while (m_parent[i] != i)
+            i = m_parent[i] = m_parent[m_parent[i]];
         return i;
     }
     void unite(std::size_t a, std::size_t b) { m_parent[find(a)] = find(b); }
@@ -25,8 +28,7 @@ private:
 
 /// Call visit(i, j, gap) once for every pair i < j whose gap is below maxGap; a uniform grid of
 /// cells no smaller than the largest diameter plus maxGap keeps it O(N).
-template <typename Visit>
-void forCloseDiscs(const GrainArrays& g, double maxGap, Visit visit) {
+template <typename Visit> void forCloseDiscs(const GrainArrays& g, double maxGap, Visit visit) {
     double xMin = g.x[0], yMin = g.y[0], rMax = 0;
     for (std::size_t i = 0; i < g.count; ++i) {
         xMin = std::min(xMin, double(g.x[i]));
@@ -57,7 +59,8 @@ void forCloseDiscs(const GrainArrays& g, double maxGap, Visit visit) {
                 for (auto it = begin; it != end; ++it) {
                     const std::size_t j = it->second;
                     if (j <= i) continue;
-                    const double gap = std::hypot(g.x[i] - g.x[j], g.y[i] - g.y[j]) - g.radius[i] - g.radius[j];
+                    const double gap =
+                        std::hypot(g.x[i] - g.x[j], g.y[i] - g.y[j]) - g.radius[i] - g.radius[j];
                     if (gap < maxGap) visit(i, j, gap);
                 }
             }
@@ -78,15 +81,18 @@ std::vector<bool> mainMass(const GrainArrays& g, double contactGap, double bridg
         if (gap < contactGap) touching.emplace_back(i, j);
     });
     std::vector<std::size_t> size(g.count, 0);
-    for (std::size_t i = 0; i < g.count; ++i) ++size[sets.find(i)];
-    const auto largest = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
+    for (std::size_t i = 0; i < g.count; ++i)
+        ++size[sets.find(i)];
+    const auto largest =
+        static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
     // A disc of the largest group counts when it touches another disc of that group; a lone
     // disc on its own still links the group across its gap but is not part of the mass. With
     // nothing touching at all (a single disc, a lattice of separate discs) the group counts whole.
     for (const auto& [i, j] : touching)
         if (sets.find(i) == largest && sets.find(j) == largest) main[i] = main[j] = true;
     if (std::none_of(main.begin(), main.end(), [](bool b) { return b; }))
-        for (std::size_t i = 0; i < g.count; ++i) main[i] = sets.find(i) == largest;
+        for (std::size_t i = 0; i < g.count; ++i)
+            main[i] = sets.find(i) == largest;
     return main;
 }
 

@@ -31,13 +31,20 @@ using KeyLines = std::map<std::string, int>;
 
 std::string describeNode(const toml::node& node) {
     switch (node.type()) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "a whole number";
-    case toml::node_type::floating_point: return "a number";
-    case toml::node_type::boolean: return "a boolean";
-    default: return "a date or time";
+    case toml::node_type::table:
+        return "a table";
+    case toml::node_type::array:
+        return "an array";
+    case toml::node_type::string:
+        return "a string";
+    case toml::node_type::integer:
+        return "a whole number";
+    case toml::node_type::floating_point:
+        return "a number";
+    case toml::node_type::boolean:
+        return "a boolean";
+    default:
+        return "a date or time";
     }
 }
 
@@ -77,7 +84,8 @@ void applyTable(CaseSpec& spec, const toml::table& root, const std::string& sour
         const int line = static_cast<int>(key.source().begin.line);
         if (const auto* table = node.as_table()) {
             bool known = false;
-            for (const auto& section : sections) known = known || (section == name && !name.empty());
+            for (const auto& section : sections)
+                known = known || (section == name && !name.empty());
             if (!known) {
                 const std::string nearest = solver::nearestWord(name, sections);
                 throw InputError(source, line, name,
@@ -125,8 +133,8 @@ ParamValue parseOverrideValue(const ParamDecl& decl, const std::string& text,
     }
     }
     throw InputError("--set " + assignment, 0, decl.path(),
-                     "expected " + std::string(solver::describeType(decl.type)) + ", got '" +
-                         text + "'");
+                     "expected " + std::string(solver::describeType(decl.type)) + ", got '" + text +
+                         "'");
 }
 
 void checkConsistency(const CaseSpec& spec, const std::string& source, const KeyLines& lines) {
@@ -183,7 +191,8 @@ CaseSpec parseCase(const std::string& text, const std::string& source,
 CaseSpec loadCase(const std::string& path, const std::vector<std::string>& overrides) {
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
-        throw InputError(path + " is a folder, not a case file (lbdem resume takes a run's folder)");
+        throw InputError(path +
+                         " is a folder, not a case file (lbdem resume takes a run's folder)");
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path + ": cannot open the case file (does it exist?)");
     std::ostringstream text;

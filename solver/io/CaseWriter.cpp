@@ -3,8 +3,8 @@
 
 #include "solver/scene/CaseSchema.h"
 
-#include <cstdio>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -45,16 +45,19 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
     const std::string temporary = path + ".tmp." + std::to_string(::getpid());
     {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
+        if (!file)
+            throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
         file << text;
         file.flush();
-        if (!file) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
+        if (!file)
+            throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
     }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
     if (error) {
         std::filesystem::remove(temporary);
-        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + error.message());
+        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " +
+                                 error.message());
     }
 }
 

@@ -67,15 +67,14 @@ template <class T>
 void writeDataset(hid_t group, const std::string& name, const std::vector<T>& values, hid_t type) {
     const hsize_t size = values.size();
     Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose, "cannot create a dataspace");
-    Handle dataset(H5Dcreate2(group, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
-                              H5P_DEFAULT),
-                   H5Dclose, "cannot create dataset " + name);
+    Handle dataset(
+        H5Dcreate2(group, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+        H5Dclose, "cannot create dataset " + name);
     if (size > 0 && H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
         throw std::runtime_error("cannot write dataset " + name);
 }
 
-template <class T>
-std::vector<T> readDataset(hid_t group, const std::string& name, hid_t type) {
+template <class T> std::vector<T> readDataset(hid_t group, const std::string& name, hid_t type) {
     Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "missing dataset " + name);
     Handle space(H5Dget_space(dataset.get()), H5Sclose, "bad dataspace of " + name);
     hsize_t size = 0;
@@ -89,12 +88,13 @@ std::vector<T> readDataset(hid_t group, const std::string& name, hid_t type) {
 /// Names of the links in a group, in creation-independent (name) order.
 std::vector<std::string> linkNames(hid_t group) {
     std::vector<std::string> names;
-    H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
-               [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
-                   static_cast<std::vector<std::string>*>(data)->emplace_back(name);
-                   return 0;
-               },
-               &names);
+    H5Literate(
+        group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+        [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+            static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+            return 0;
+        },
+        &names);
     return names;
 }
 
@@ -162,10 +162,12 @@ std::string checksumOf(const CheckpointData& data) {
 }
 
 /// Refuse a checkpoint whose arrays fail the checksum or hold a value that is not finite.
-void verify(const std::string& path, const CheckpointData& data, const std::string& storedChecksum) {
+void verify(const std::string& path, const CheckpointData& data,
+            const std::string& storedChecksum) {
     if (!storedChecksum.empty() && storedChecksum != checksumOf(data))
-        throw solver::InputError(path + " is damaged: its case and arrays do not match the checksum written with "
-                                 "them; resume from a copy, or start the run again with lbdem run --force");
+        throw solver::InputError(
+            path + " is damaged: its case and arrays do not match the checksum written with "
+                   "them; resume from a copy, or start the run again with lbdem run --force");
     for (const auto& [name, values] : data.state.reals) {
         if (name.rfind(kMayBeNonFinite, 0) == 0) continue;
         for (const double value : values)
@@ -191,7 +193,8 @@ void writeFile(const std::string& path, const CheckpointData& data) {
     Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
                 "cannot create " + path);
     writeStringAttribute(file.get(), kCaseAttribute, data.case_toml);
-    writeStringAttribute(file.get(), "format", "lbdem checkpoint " + std::to_string(kFormatVersion));
+    writeStringAttribute(file.get(), "format",
+                         "lbdem checkpoint " + std::to_string(kFormatVersion));
     writeStringAttribute(file.get(), kChecksumAttribute, checksumOf(data));
     Handle reals(H5Gcreate2(file.get(), kRealGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                  H5Gclose, "cannot create group");
@@ -201,7 +204,8 @@ void writeFile(const std::string& path, const CheckpointData& data) {
                     H5Gclose, "cannot create group");
     for (const auto& [name, values] : data.state.integers)
         writeDataset(integers.get(), encodeName(name), values, H5T_NATIVE_INT64);
-    if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("cannot flush " + path);
+    if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
+        throw std::runtime_error("cannot flush " + path);
 }
 
 CheckpointData readFile(const std::string& path) {
@@ -210,14 +214,16 @@ CheckpointData readFile(const std::string& path) {
     data.case_toml = readStringAttribute(file.get(), kCaseAttribute);
     Handle reals(H5Gopen2(file.get(), kRealGroup, H5P_DEFAULT), H5Gclose, "missing group /reals");
     for (const auto& name : linkNames(reals.get()))
-        data.state.reals[decodeName(name)] = readDataset<double>(reals.get(), name, H5T_NATIVE_DOUBLE);
+        data.state.reals[decodeName(name)] =
+            readDataset<double>(reals.get(), name, H5T_NATIVE_DOUBLE);
     Handle integers(H5Gopen2(file.get(), kIntegerGroup, H5P_DEFAULT), H5Gclose,
                     "missing group /integers");
     for (const auto& name : linkNames(integers.get()))
         data.state.integers[decodeName(name)] =
             readDataset<std::int64_t>(integers.get(), name, H5T_NATIVE_INT64);
     const bool hasChecksum = H5Aexists(file.get(), kChecksumAttribute) > 0;
-    verify(path, data, hasChecksum ? readStringAttribute(file.get(), kChecksumAttribute) : std::string());
+    verify(path, data,
+           hasChecksum ? readStringAttribute(file.get(), kChecksumAttribute) : std::string());
     return data;
 }
 
@@ -238,7 +244,8 @@ void writeCheckpoint(const std::string& path, const CheckpointData& data) {
     std::filesystem::rename(temporary, path, error);
     if (error) {
         std::remove(temporary.c_str());
-        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + error.message());
+        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " +
+                                 error.message());
     }
 }
 
@@ -250,9 +257,9 @@ CheckpointData readCheckpoint(const std::string& path) {
     } catch (const solver::InputError&) {
         throw;
     } catch (const std::exception& error) {
-        throw solver::InputError(path + " is not a readable lbdem checkpoint (" + error.what() + ")");
+        throw solver::InputError(path + " is not a readable lbdem checkpoint (" + error.what() +
+                                 ")");
     }
 }
-
 
 } // namespace lbdem::io

@@ -9,8 +9,8 @@ namespace lbdem::io {
 
 /// What a checkpoint file holds.
 struct CheckpointData {
-    std::string case_toml;        ///< the resolved case (io::formatCase), to rebuild the Simulation
-    solver::StateArchive state;   ///< the solver state (Simulation::saveState)
+    std::string case_toml;      ///< the resolved case (io::formatCase), to rebuild the Simulation
+    solver::StateArchive state; ///< the solver state (Simulation::saveState)
 };
 
 /// Write data to path as HDF5 through a temporary file renamed over path, so that a run killed

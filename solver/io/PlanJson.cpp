@@ -70,10 +70,13 @@ std::string formatPlan(const solver::Plan& plan) {
     line("end time", "%.4g", plan.end_time_s, "s");
     line("steps", "%.0f", static_cast<double>(plan.steps), "");
     line("memory", "%.1f", plan.memory_bytes / 1048576.0, "MiB (estimate)");
-    line("outputs", "%.1f", plan.output_bytes / 1048576.0, "MiB (upper bound, all files of the run)");
+    line("outputs", "%.1f", plan.output_bytes / 1048576.0,
+         "MiB (upper bound, all files of the run)");
     line("estimated run time", "%.0f", plan.estimated_run_s, "s");
-    for (const auto& note : plan.notes) text += "note: " + note + "\n";
-    for (const auto& warning : plan.warnings) text += "warning: " + warning + "\n";
+    for (const auto& note : plan.notes)
+        text += "note: " + note + "\n";
+    for (const auto& warning : plan.warnings)
+        text += "warning: " + warning + "\n";
     return text;
 }
 

@@ -32,7 +32,8 @@ std::vector<std::string> stringArray(const toml::node& node, const std::string& 
 }
 
 /// The seeds array: positive integers, none twice.
-std::vector<int> seedArray(const toml::node& node, const std::string& path, const std::string& key) {
+std::vector<int> seedArray(const toml::node& node, const std::string& path,
+                           const std::string& key) {
     const auto* array = node.as_array();
     const int line = static_cast<int>(node.source().begin.line);
     const std::string expected = "expected an array of distinct positive integers, e.g. [1, 2, 3]";
@@ -40,9 +41,11 @@ std::vector<int> seedArray(const toml::node& node, const std::string& path, cons
     std::vector<int> seeds;
     for (const auto& item : *array) {
         const auto value = item.value<int64_t>();
-        if (!item.is_integer() || !value || *value < 1 || *value > 2147483647) throw InputError(path, line, key, expected);
+        if (!item.is_integer() || !value || *value < 1 || *value > 2147483647)
+            throw InputError(path, line, key, expected);
         if (std::find(seeds.begin(), seeds.end(), *value) != seeds.end())
-            throw InputError(path, line, key, "seed " + std::to_string(*value) + " is listed twice");
+            throw InputError(path, line, key,
+                             "seed " + std::to_string(*value) + " is listed twice");
         seeds.push_back(static_cast<int>(*value));
     }
     return seeds;
@@ -75,7 +78,8 @@ SweepSpec loadSweep(const std::string& path) {
             for (const auto& file : stringArray(node, path, name)) {
                 const auto resolved = (folder / file).lexically_normal();
                 if (!std::filesystem::exists(resolved))
-                    throw InputError(path, line, name, "case file " + resolved.string() + " does not exist");
+                    throw InputError(path, line, name,
+                                     "case file " + resolved.string() + " does not exist");
                 sweep.cases.push_back(resolved.string());
             }
         } else if (name == "set") {
@@ -85,10 +89,12 @@ SweepSpec loadSweep(const std::string& path) {
         } else {
             const std::string nearest = solver::nearestWord(name, kSweepKeys);
             throw InputError(path, line, name,
-                             "unknown key" + (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
+                             "unknown key" +
+                                 (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
         }
     }
-    if (!root.contains("sweep")) throw InputError(path, 1, "sweep", "missing; put 'sweep = 1' at the top");
+    if (!root.contains("sweep"))
+        throw InputError(path, 1, "sweep", "missing; put 'sweep = 1' at the top");
     if (sweep.cases.empty()) throw InputError(path, 1, "cases", "the sweep lists no case files");
     return sweep;
 }

@@ -11,7 +11,7 @@ struct SweepSpec {
     std::string name;                   ///< sweep name (table and figure titles)
     std::vector<std::string> cases;     ///< case files, absolute or relative to the cwd
     std::vector<std::string> overrides; ///< "section.key=value" applied to every case
-    std::vector<int> seeds;             ///< packing seeds (grains.seed) of each case; empty: the case's own
+    std::vector<int> seeds; ///< packing seeds (grains.seed) of each case; empty: the case's own
 };
 
 /// Parse a sweep file (`sweep = 1`, `name`, `cases = [...]`, optional `set = [...]` and

@@ -2,9 +2,9 @@
 #include "solver/io/TimeSeriesWriter.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -21,7 +21,8 @@ std::vector<std::string> splitLine(const std::string& line) {
     std::vector<std::string> cells;
     std::stringstream stream(line);
     std::string cell;
-    while (std::getline(stream, cell, ',')) cells.push_back(cell);
+    while (std::getline(stream, cell, ','))
+        cells.push_back(cell);
     if (!line.empty() && line.back() == ',') cells.emplace_back();
     return cells;
 }
@@ -37,14 +38,16 @@ std::string formatValue(double value) {
 
 double printedValue(double value) {
     const std::string text = formatValue(value);
-    return text.empty() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(text.c_str(), nullptr);
+    return text.empty() ? std::numeric_limits<double>::quiet_NaN()
+                        : std::strtod(text.c_str(), nullptr);
 }
 
 TimeSeriesWriter::TimeSeriesWriter(const std::string& path, bool append) : m_path(path) {
     if (append) {
         std::ifstream existing(path);
         std::string header;
-        if (existing && std::getline(existing, header) && !header.empty()) m_columns = splitLine(header);
+        if (existing && std::getline(existing, header) && !header.empty())
+            m_columns = splitLine(header);
     }
     m_file.open(path, m_columns.empty() ? std::ios::trunc : std::ios::app);
     if (!m_file) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
@@ -57,7 +60,8 @@ void TimeSeriesWriter::append(const std::map<std::string, double>& metrics) {
         for (const auto& [name, value] : metrics)
             if (std::find(m_columns.begin(), m_columns.end(), name) == m_columns.end())
                 m_columns.push_back(name);
-        for (std::size_t c = 0; c < m_columns.size(); ++c) m_file << (c ? "," : "") << m_columns[c];
+        for (std::size_t c = 0; c < m_columns.size(); ++c)
+            m_file << (c ? "," : "") << m_columns[c];
         m_file << "\n";
     }
     for (std::size_t c = 0; c < m_columns.size(); ++c) {
@@ -75,7 +79,8 @@ std::vector<double> TimeSeriesTable::column(const std::string& name) const {
     const auto index = static_cast<std::size_t>(found - columns.begin());
     std::vector<double> values;
     values.reserve(rows.size());
-    for (const auto& row : rows) values.push_back(index < row.size() ? row[index] : std::nan(""));
+    for (const auto& row : rows)
+        values.push_back(index < row.size() ? row[index] : std::nan(""));
     return values;
 }
 
@@ -90,7 +95,8 @@ TimeSeriesTable readTimeSeries(const std::string& path) {
         if (line.empty()) continue;
         std::vector<double> row;
         for (const auto& cell : splitLine(line))
-            row.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(cell));
+            row.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                       : std::stod(cell));
         table.rows.push_back(std::move(row));
     }
     return table;

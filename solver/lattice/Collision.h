@@ -30,8 +30,7 @@ struct CollisionParams {
     Real smagorinsky = 0.17; ///< Smagorinsky constant C (LES only)
 };
 
-template <bool kLes, bool kForce>
-struct MrtCollision;
+template <bool kLes, bool kForce> struct MrtCollision;
 
 /// BGK: f_i <- f_i - (f_i - f_i^eq) / tau + (1 - 1/(2 tau)) S_i, Guo et al. (2002) source
 /// S_i = w_i [3 (c_i - u) + 9 (c_i . u) c_i] . F, with u = (sum c_i f_i + F/2) / rho.
@@ -42,60 +41,61 @@ struct MrtCollision;
 /// momentum are left untouched, whereas f_i - (f_i - f_i^eq)/tau rounds each f_i^eq and, in
 /// float, lost momentum at 1e-10 per step in step with the flow (the Taylor-Green vortex drifted
 /// 7.9e-5 from double in 2000 steps at tau = 0.51; 2.8e-7 through the moments).
-template <bool kForce>
-struct BgkCollision {
+template <bool kForce> struct BgkCollision {
     Real omega, fx, fy;
 
     /// Collide the full populations f_i in double.
     LBDEM_KERNEL_INLINE void operator()(Real* f) const { apply<Real, false>(f); }
 
-    template <class T, bool kShifted>
-    LBDEM_KERNEL_INLINE void apply(T* f) const {
+    template <class T, bool kShifted> LBDEM_KERNEL_INLINE void apply(T* f) const {
         if constexpr (kShifted) {
-            MrtCollision<false, kForce>{omega, omega, omega, omega, 1 / omega, 0, fx, fy}.template apply<T, true>(f);
+            MrtCollision<false, kForce>{omega, omega, omega, omega, 1 / omega, 0, fx, fy}
+                .template apply<T, true>(f);
         } else {
             full(f);
         }
     }
 
 private:
-    template <class T>
-    LBDEM_KERNEL_INLINE void full(T* f) const {
+    template <class T> LBDEM_KERNEL_INLINE void full(T* f) const {
         const T rho = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8];
         T jx = f[1] - f[3] + f[5] - f[6] - f[7] + f[8];
         T jy = f[2] - f[4] + f[5] + f[6] - f[7] - f[8];
-        if (kForce) { jx += T(0.5) * T(fx); jy += T(0.5) * T(fy); }
+        if (kForce) {
+            jx += T(0.5) * T(fx);
+            jy += T(0.5) * T(fy);
+        }
         const T inv = T(1) / rho;
         const T ux = jx * inv, uy = jy * inv;
         const T usq = T(1.5) * (ux * ux + uy * uy);
         const T w0 = T(4.0 / 9) * rho, w1 = T(1.0 / 9) * rho, w2 = T(1.0 / 36) * rho;
         const T a = ux + uy, b = uy - ux;
-        const T feq[9] = {
-            w0 * (1 - usq),
-            w1 * (1 + 3 * ux + T(4.5) * ux * ux - usq),
-            w1 * (1 + 3 * uy + T(4.5) * uy * uy - usq),
-            w1 * (1 - 3 * ux + T(4.5) * ux * ux - usq),
-            w1 * (1 - 3 * uy + T(4.5) * uy * uy - usq),
-            w2 * (1 + 3 * a + T(4.5) * a * a - usq),
-            w2 * (1 + 3 * b + T(4.5) * b * b - usq),
-            w2 * (1 - 3 * a + T(4.5) * a * a - usq),
-            w2 * (1 - 3 * b + T(4.5) * b * b - usq)};
+        const T feq[9] = {w0 * (1 - usq),
+                          w1 * (1 + 3 * ux + T(4.5) * ux * ux - usq),
+                          w1 * (1 + 3 * uy + T(4.5) * uy * uy - usq),
+                          w1 * (1 - 3 * ux + T(4.5) * ux * ux - usq),
+                          w1 * (1 - 3 * uy + T(4.5) * uy * uy - usq),
+                          w2 * (1 + 3 * a + T(4.5) * a * a - usq),
+                          w2 * (1 + 3 * b + T(4.5) * b * b - usq),
+                          w2 * (1 - 3 * a + T(4.5) * a * a - usq),
+                          w2 * (1 - 3 * b + T(4.5) * b * b - usq)};
         const T om = T(omega);
-        for (int i = 0; i < 9; ++i) f[i] -= om * (f[i] - feq[i]);
+        for (int i = 0; i < 9; ++i)
+            f[i] -= om * (f[i] - feq[i]);
         if (kForce) addSource(f, ux, uy);
     }
 
-    template <class T>
-    LBDEM_KERNEL_INLINE void addSource(T* f, T ux, T uy) const {
+    template <class T> LBDEM_KERNEL_INLINE void addSource(T* f, T ux, T uy) const {
         constexpr int cx[9] = {0, 1, 0, -1, 0, 1, -1, -1, 1};
         constexpr int cy[9] = {0, 0, 1, 0, -1, 1, 1, -1, -1};
-        constexpr T w[9] = {T(4.0 / 9), T(1.0 / 9), T(1.0 / 9), T(1.0 / 9), T(1.0 / 9),
+        constexpr T w[9] = {T(4.0 / 9),  T(1.0 / 9),  T(1.0 / 9),  T(1.0 / 9), T(1.0 / 9),
                             T(1.0 / 36), T(1.0 / 36), T(1.0 / 36), T(1.0 / 36)};
         const T k = 1 - T(0.5) * T(omega), gx = T(fx), gy = T(fy);
         for (int i = 0; i < 9; ++i) {
             const T cu = cx[i] * ux + cy[i] * uy;
-            f[i] += k * w[i] * ((3 * (cx[i] - ux) + 9 * cu * cx[i]) * gx +
-                                (3 * (cy[i] - uy) + 9 * cu * cy[i]) * gy);
+            f[i] += k * w[i] *
+                    ((3 * (cx[i] - ux) + 9 * cu * cx[i]) * gx +
+                     (3 * (cy[i] - uy) + 9 * cu * cy[i]) * gy);
         }
     }
 };
@@ -105,8 +105,7 @@ private:
 /// M^-1 = M^T diag(1/9, 1/36, 1/36, 1/6, 1/12, 1/6, 1/12, 1/4, 1/4).
 /// With kLes the shear rate is s_nu = 1/tau*, tau* = (tau + sqrt(tau^2 + 18 C^2 sqrt(2Q)/rho))/2,
 /// Q = Pi_neq : Pi_neq (Hou et al. 1996; the force correction of Pi_neq is neglected).
-template <bool kLes, bool kForce>
-struct MrtCollision {
+template <bool kLes, bool kForce> struct MrtCollision {
     Real sNu, sE, sEps, sQ, tau, c2x18, fx, fy;
 
     /// Collide the full populations f_i in double.
@@ -116,12 +115,13 @@ struct MrtCollision {
     /// moments are rho = 1, e = -2, eps = 1 and zero otherwise, so with shifted populations
     /// e - e^eq = e' - (-2 rho' + 3 j^2/rho) and eps - eps^eq = eps' - (rho' - 3 j^2/rho) in the
     /// shifted sums (primes) and rho' = rho - 1: the same expressions with the sum in place of rho.
-    template <class T, bool kShifted>
-    LBDEM_KERNEL_INLINE void apply(T* f) const {
+    template <class T, bool kShifted> LBDEM_KERNEL_INLINE void apply(T* f) const {
         // The parameters in T: no double arithmetic inside a float kernel.
-        const T sNuT = T(sNu), sET = T(sE), sEpsT = T(sEps), sQT = T(sQ), tauT = T(tau), c2x18T = T(c2x18);
+        const T sNuT = T(sNu), sET = T(sE), sEpsT = T(sEps), sQT = T(sQ), tauT = T(tau),
+                c2x18T = T(c2x18);
         const T fxT = T(fx), fyT = T(fy);
-        const T sum = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8]; // rho, or rho - 1
+        const T sum =
+            f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8]; // rho, or rho - 1
         const T sumAxis = f[1] + f[2] + f[3] + f[4];
         const T sumDiag = f[5] + f[6] + f[7] + f[8];
         const T e = -4 * f[0] - sumAxis + 2 * sumDiag;
@@ -133,7 +133,10 @@ struct MrtCollision {
         const T pxx = f[1] - f[2] + f[3] - f[4];
         const T pxy = f[5] - f[6] + f[7] - f[8];
         T gx = 0, gy = 0; // physical momentum shift F/2 (Guo)
-        if (kForce) { gx = T(0.5) * fxT; gy = T(0.5) * fyT; }
+        if (kForce) {
+            gx = T(0.5) * fxT;
+            gy = T(0.5) * fyT;
+        }
         const T inv = T(1) / (kShifted ? 1 + sum : sum);
         const T px = jx + gx, py = jy + gy; // rho u
         const T j2 = (px * px + py * py) * inv;
@@ -144,7 +147,8 @@ struct MrtCollision {
         const T dPxy = pxy - px * py * inv;
         T sNuHere = sNuT;
         if (kLes) {
-            // Pi_neq from the non-equilibrium moments: Pi_xx = (de/3 + dPxx)/2, Pi_yy = (de/3 - dPxx)/2.
+            // Pi_neq from the non-equilibrium moments: Pi_xx = (de/3 + dPxx)/2, Pi_yy = (de/3 -
+            // dPxx)/2.
             const T pxxN = T(0.5) * (de * T(1.0 / 3) + dPxx);
             const T pyyN = T(0.5) * (de * T(1.0 / 3) - dPxx);
             const T q = pxxN * pxxN + pyyN * pyyN + 2 * dPxy * dPxy;

@@ -11,7 +11,7 @@ constexpr int kCy[kQ] = {0, 0, 1, 0, -1, 1, 1, -1, -1};
 /// Index of -c_i.
 constexpr int kOpposite[kQ] = {0, 3, 4, 1, 2, 7, 8, 5, 6};
 /// Lattice weights w_i (4/9, 1/9, 1/36).
-constexpr double kW[kQ] = {4.0 / 9, 1.0 / 9, 1.0 / 9, 1.0 / 9, 1.0 / 9,
+constexpr double kW[kQ] = {4.0 / 9,  1.0 / 9,  1.0 / 9,  1.0 / 9, 1.0 / 9,
                            1.0 / 36, 1.0 / 36, 1.0 / 36, 1.0 / 36};
 /// Squared lattice speed of sound c_s^2 = 1/3.
 constexpr double kCs2 = 1.0 / 3.0;

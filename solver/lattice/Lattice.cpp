@@ -22,7 +22,10 @@ bool isZouHe(const SideCondition& side) {
 
 // Corners shared by two ghost sides take the stronger condition: wall > free slip > pressure.
 int priority(SideType type) {
-    return type == SideType::Wall ? 3 : type == SideType::FreeSlip ? 2 : type == SideType::Pressure ? 1 : 0;
+    return type == SideType::Wall       ? 3
+           : type == SideType::FreeSlip ? 2
+           : type == SideType::Pressure ? 1
+                                        : 0;
 }
 
 int directionOf(int cx, int cy) {
@@ -42,9 +45,12 @@ CollisionModel collisionFromName(const std::string& name) {
 
 const char* collisionName(CollisionModel model) {
     switch (model) {
-    case CollisionModel::Bgk: return "bgk";
-    case CollisionModel::Mrt: return "mrt";
-    case CollisionModel::MrtLes: return "mrt_les";
+    case CollisionModel::Bgk:
+        return "bgk";
+    case CollisionModel::Mrt:
+        return "mrt";
+    case CollisionModel::MrtLes:
+        return "mrt_les";
     }
     return "?";
 }
@@ -75,8 +81,10 @@ Lattice::Lattice(const LatticeSetup& setup) : m_setup(setup) {
     m_offsetY = 0.5;
     m_cells = static_cast<long long>(m_nx) * m_ny;
     const auto values = static_cast<std::size_t>(kQ * m_cells);
-    if (s.storage == PopulationStorage::Float) m_f32.assign(values, 0.0f);
-    else m_f64.assign(values, 0.0);
+    if (s.storage == PopulationStorage::Float)
+        m_f32.assign(values, 0.0f);
+    else
+        m_f64.assign(values, 0.0);
     m_flags.assign(static_cast<std::size_t>(m_cells), kFluid);
     m_side.assign(static_cast<std::size_t>(m_cells), -1);
     buildSides();
@@ -133,11 +141,15 @@ void Lattice::buildWallLinks() {
                 // Free slip: the incoming population is the mirror image of one leaving a
                 // neighbour along the wall; where that neighbour is not fluid, bounce back.
                 const bool horizontal = m_side[n] >= 2;
-                const int mirror = horizontal ? directionOf(kCx[in], -kCy[in]) : directionOf(-kCx[in], kCy[in]);
+                const int mirror =
+                    horizontal ? directionOf(kCx[in], -kCy[in]) : directionOf(-kCx[in], kCy[in]);
                 const int ci = static_cast<int>(c % m_nx), cj = static_cast<int>(c / m_nx);
                 const long long from = horizontal ? index((ci - kCx[in] + m_nx) % m_nx, cj)
                                                   : index(ci, (cj - kCy[in] + m_ny) % m_ny);
-                if (isFluid(from) && from != c) { sourceNode = from; sourceDir = mirror; }
+                if (isFluid(from) && from != c) {
+                    sourceNode = from;
+                    sourceDir = mirror;
+                }
             }
             // The source direction has the incoming one's weight (its opposite or its mirror
             // image), so float storage's shift w_i cancels and the link copies stored values.
@@ -154,7 +166,8 @@ void Lattice::buildWallLinks() {
 
 void Lattice::postSlots(long long cell, long long slots[kQ]) const {
     if (m_step & 1) {
-        for (int q = 0; q < kQ; ++q) slots[q] = kOpposite[q] * m_cells + cell;
+        for (int q = 0; q < kQ; ++q)
+            slots[q] = kOpposite[q] * m_cells + cell;
         return;
     }
     postSlots(static_cast<int>(cell % m_nx), static_cast<int>(cell / m_nx), slots);
@@ -164,7 +177,8 @@ Real Lattice::density(long long cell) const {
     long long slots[kQ];
     postSlots(cell, slots);
     Real rho = 0;
-    for (int q = 0; q < kQ; ++q) rho += population(slots[q], q);
+    for (int q = 0; q < kQ; ++q)
+        rho += population(slots[q], q);
     return rho;
 }
 
@@ -196,7 +210,8 @@ void Lattice::resetSolids() {
     for (std::size_t k = 0; k < m_solids.size(); ++k) {
         long long slots[kQ];
         postSlots(m_solids[k], slots);
-        for (int q = 0; q < kQ; ++q) setPopulation(slots[q], q, kW[q]);
+        for (int q = 0; q < kQ; ++q)
+            setPopulation(slots[q], q, kW[q]);
     }
 }
 
@@ -209,14 +224,15 @@ std::vector<double> Lattice::exportPopulations() const {
 
 void Lattice::importPopulations(const std::vector<double>& f) {
     if (f.size() != static_cast<std::size_t>(kQ * m_cells))
-        throw InputError("the populations to import (" + std::to_string(f.size()) + ") do not fit the lattice (" +
-                         std::to_string(kQ * m_cells) + ")");
+        throw InputError("the populations to import (" + std::to_string(f.size()) +
+                         ") do not fit the lattice (" + std::to_string(kQ * m_cells) + ")");
     for (std::size_t k = 0; k < f.size(); ++k)
         setPopulation(static_cast<long long>(k), static_cast<int>(k / m_cells), f[k]);
 }
 
 std::vector<double> Lattice::exportStoredValues() const {
-    if (m_setup.storage == PopulationStorage::Float) return std::vector<double>(m_f32.begin(), m_f32.end());
+    if (m_setup.storage == PopulationStorage::Float)
+        return std::vector<double>(m_f32.begin(), m_f32.end());
     return std::vector<double>(m_f64.begin(), m_f64.end());
 }
 
@@ -225,7 +241,8 @@ void Lattice::importStoredValues(const std::vector<double>& values) {
         throw InputError("the stored populations to import (" + std::to_string(values.size()) +
                          ") do not fit the lattice (" + std::to_string(kQ * m_cells) + ")");
     if (m_setup.storage == PopulationStorage::Float)
-        for (std::size_t k = 0; k < values.size(); ++k) m_f32[k] = static_cast<float>(values[k]);
+        for (std::size_t k = 0; k < values.size(); ++k)
+            m_f32[k] = static_cast<float>(values[k]);
     else
         m_f64.assign(values.begin(), values.end());
 }

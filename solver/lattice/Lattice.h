@@ -27,9 +27,9 @@ enum class SideType {
 /// One side's condition; Zou–He sides exist on the left and right only.
 struct SideCondition {
     SideType type = SideType::Wall;
-    Real ux = 0, uy = 0;        ///< wall velocity (Wall) or uniform normal velocity (ZouHeVelocity)
-    Real rho = 1;               ///< density of Pressure / ZouHePressure sides
-    std::vector<Real> profile;  ///< ZouHeVelocity: ux per lattice row (empty: uniform ux)
+    Real ux = 0, uy = 0;       ///< wall velocity (Wall) or uniform normal velocity (ZouHeVelocity)
+    Real rho = 1;              ///< density of Pressure / ZouHePressure sides
+    std::vector<Real> profile; ///< ZouHeVelocity: ux per lattice row (empty: uniform ux)
 };
 
 /// Everything the lattice needs at construction, in lattice units.
@@ -55,20 +55,23 @@ struct ObstacleLoad {
 /// therefore depends on the parity of the step count: postSlot() and inSlot() say where, and
 /// population() / setPopulation() are the way in from outside, since a float slot holds
 /// f_i - w_i (PopulationStorage); only hot loops (the grain links) address the stored values
-/// directly, through storedDoubles() / storedFloats() and postSlotOffset(). Boundary passes write the populations that solid neighbours
-/// send into the fluid before the bulk kernel, so the kernel itself has no branches.
+/// directly, through storedDoubles() / storedFloats() and postSlotOffset(). Boundary passes write
+/// the populations that solid neighbours send into the fluid before the bulk kernel, so the kernel
+/// itself has no branches.
 class Lattice {
 public:
     /// Build the lattice at rest (rho = 1, u = 0) with its ghost layers and wall links.
     explicit Lattice(const LatticeSetup& setup);
 
-    int nx() const { return m_nx; }   ///< nodes in x including ghost layers
-    int ny() const { return m_ny; }   ///< nodes in y including ghost layers
+    int nx() const { return m_nx; } ///< nodes in x including ghost layers
+    int ny() const { return m_ny; } ///< nodes in y including ghost layers
     long long cells() const { return m_cells; }
     int firstFluidX() const { return m_ghostLeft; }   ///< index of the first domain column
     int firstFluidY() const { return m_ghostBottom; } ///< index of the first domain row
     const LatticeSetup& setup() const { return m_setup; }
-    PopulationStorage storage() const { return m_setup.storage; } ///< number format of the populations
+    PopulationStorage storage() const {
+        return m_setup.storage;
+    } ///< number format of the populations
     /// x of node column i in lattice units, measured from the domain's left edge.
     Real nodeX(int i) const { return i - m_ghostLeft + m_offsetX; }
     /// y of node row j in lattice units, measured from the domain's bottom edge.
@@ -81,12 +84,14 @@ public:
     /// Mark nodes inside the closed polygon solid (Bouzidi links); returns the owner id.
     int addPolygon(const std::vector<std::pair<Real, Real>>& vertices);
     /// Set every fluid node to equilibrium at rho(x, y), u(x, y) (lattice coordinates).
-    template <class Field>
-    void initialise(const Field& field);
+    template <class Field> void initialise(const Field& field);
     /// Replace the collision parameters (applies from the next step).
     void setCollision(const CollisionParams& params) { m_setup.collision = params; }
     /// Replace the uniform body force density.
-    void setBodyForce(Real fx, Real fy) { m_setup.fx = fx; m_setup.fy = fy; }
+    void setBodyForce(Real fx, Real fy) {
+        m_setup.fx = fx;
+        m_setup.fy = fy;
+    }
 
     /// One fused stream-collide step: boundary links, bulk kernel, Zou-He nodes, solid reset.
     void step();
@@ -109,17 +114,21 @@ public:
     void postSlots(int i, int j, long long slots[kQ]) const;
     /// postSlot() of the node at column i, row j (no division).
     long long postSlot(int i, int j, int dir) const {
-        return m_step & 1 ? kOpposite[dir] * m_cells + index(i, j) : dir * m_cells + neighbour(i, j, dir);
+        return m_step & 1 ? kOpposite[dir] * m_cells + index(i, j)
+                          : dir * m_cells + neighbour(i, j, dir);
     }
     /// The population of direction `dir` held at `slot` (a postSlot/inSlot index for `dir`).
     Real population(long long slot, int dir) const {
-        return m_setup.storage == PopulationStorage::Float ? StoredPopulation<float>::load(m_f32[slot], kW[dir])
-                                                           : m_f64[slot];
+        return m_setup.storage == PopulationStorage::Float
+                   ? StoredPopulation<float>::load(m_f32[slot], kW[dir])
+                   : m_f64[slot];
     }
     /// Store the population of direction `dir` at `slot`.
     void setPopulation(long long slot, int dir, Real value) {
-        if (m_setup.storage == PopulationStorage::Float) m_f32[slot] = StoredPopulation<float>::store(value, kW[dir]);
-        else m_f64[slot] = value;
+        if (m_setup.storage == PopulationStorage::Float)
+            m_f32[slot] = StoredPopulation<float>::store(value, kW[dir]);
+        else
+            m_f64[slot] = value;
     }
     /// The stored values in slot order (f_i for double storage, f_i - w_i for float; null for the
     /// other storage), for kernels outside the lattice that address slots themselves.
@@ -135,7 +144,9 @@ public:
     }
     /// Record, in every following step, the incoming (streamed, pre-collision) populations of
     /// these cells after the boundary passes: partially saturated cells re-collide from them.
-    void setRecordedCells(const std::vector<long long>& cells) { m_recordedCells.assign(cells.begin(), cells.end()); }
+    void setRecordedCells(const std::vector<long long>& cells) {
+        m_recordedCells.assign(cells.begin(), cells.end());
+    }
     /// The incoming populations recorded in the last step, kQ per recorded cell in the given order.
     const std::vector<Real>& recordedIncoming() const { return m_recorded; }
 
@@ -149,7 +160,8 @@ public:
     const ObstacleLoad& obstacleLoad(int owner) const { return m_loads.at(owner); }
     /// Every population f_i as a double, in slot order (layout per postSlot/inSlot at stepCount()).
     std::vector<double> exportPopulations() const;
-    /// Replace every population from exportPopulations()'s layout; throws InputError on a size mismatch.
+    /// Replace every population from exportPopulations()'s layout; throws InputError on a size
+    /// mismatch.
     void importPopulations(const std::vector<double>& f);
     /// The stored numbers exactly, as doubles in slot order: f_i for double storage, f_i - w_i for
     /// float (a checkpoint's bit-exact image; f_i itself may round differently on the way back).
@@ -158,15 +170,32 @@ public:
     /// throws InputError on a size mismatch.
     void importStoredValues(const std::vector<double>& values);
     /// Number of boundary links of each kind (copy, pressure, obstacle).
-    std::size_t linkCount() const { return m_copyLinks.size() + m_pressureLinks.size() + m_obstacleLinks.size(); }
+    std::size_t linkCount() const {
+        return m_copyLinks.size() + m_pressureLinks.size() + m_obstacleLinks.size();
+    }
 
     static constexpr std::uint8_t kFluid = 0, kSolid = 1, kPressureGhost = 2, kObstacle = 3;
 
 private:
-    struct CopyLink { long long slot[2], source[2]; Real add; };     // f[slot] = f[source] + add, per parity
-    struct PressureLink { long long node; int dir; Real rho; };       // dir: into the ghost
-    struct ObstacleLink { long long node; int dir; Real q; int owner; bool interior; };
-    struct Owner { Real cx, cy; };
+    struct CopyLink {
+        long long slot[2], source[2];
+        Real add;
+    }; // f[slot] = f[source] + add, per parity
+    struct PressureLink {
+        long long node;
+        int dir;
+        Real rho;
+    }; // dir: into the ghost
+    struct ObstacleLink {
+        long long node;
+        int dir;
+        Real q;
+        int owner;
+        bool interior;
+    };
+    struct Owner {
+        Real cx, cy;
+    };
 
     void buildSides();
     void buildWallLinks();
@@ -177,7 +206,8 @@ private:
     }
     /// inSlot() when the step count has the given parity.
     long long inSlotAt(long long cell, int dir, long long parity) const {
-        return parity ? kOpposite[dir] * m_cells + neighbour(cell, kOpposite[dir]) : dir * m_cells + cell;
+        return parity ? kOpposite[dir] * m_cells + neighbour(cell, kOpposite[dir])
+                      : dir * m_cells + cell;
     }
     /// The node at cell + c_dir, wrapping around the domain.
     long long neighbour(long long cell, int dir) const {
@@ -201,18 +231,18 @@ private:
     int m_nx = 0, m_ny = 0, m_ghostLeft = 0, m_ghostBottom = 0;
     Real m_offsetX = 0.5, m_offsetY = 0.5;
     long long m_cells = 0, m_step = 0;
-    int m_lastSweptRow = -1; // -1: the top row
-    HugeVector<double> m_f64;                 // double storage: populations, in place (AA pattern)
-    HugeVector<float> m_f32;                  // float storage: f_i - w_i, in place; one of the two is empty
-    std::vector<long long> m_recordedCells;   // cells whose incoming populations each step records
-    std::vector<Real> m_recorded;             // kQ per recorded cell
+    int m_lastSweptRow = -1;  // -1: the top row
+    HugeVector<double> m_f64; // double storage: populations, in place (AA pattern)
+    HugeVector<float> m_f32;  // float storage: f_i - w_i, in place; one of the two is empty
+    std::vector<long long> m_recordedCells; // cells whose incoming populations each step records
+    std::vector<Real> m_recorded;           // kQ per recorded cell
     HugeVector<std::uint8_t> m_flags;
-    std::vector<int> m_side;                  // for ghost nodes: which side (0 L, 1 R, 2 B, 3 T)
+    std::vector<int> m_side; // for ghost nodes: which side (0 L, 1 R, 2 B, 3 T)
     std::vector<CopyLink> m_copyLinks;
     std::vector<PressureLink> m_pressureLinks;
     std::vector<ObstacleLink> m_obstacleLinks;
     std::vector<long long> m_solids;
-    std::vector<long long> m_zouHeCells[2];   // left, right
+    std::vector<long long> m_zouHeCells[2]; // left, right
     std::vector<Owner> m_owners;
     std::vector<ObstacleLoad> m_loads;
     // Per owner: link fraction q(x, y, dir) where the link from (x, y) along dir meets the wall.
@@ -222,24 +252,27 @@ private:
 inline void Lattice::postSlots(int i, int j, long long slots[kQ]) const {
     const long long cell = index(i, j);
     if (m_step & 1) {
-        for (int q = 0; q < kQ; ++q) slots[q] = kOpposite[q] * m_cells + cell;
+        for (int q = 0; q < kQ; ++q)
+            slots[q] = kOpposite[q] * m_cells + cell;
         return;
     }
     if (i == 0 || j == 0 || i == m_nx - 1 || j == m_ny - 1) { // the neighbour may wrap
-        for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + neighbour(i, j, q);
+        for (int q = 0; q < kQ; ++q)
+            slots[q] = q * m_cells + neighbour(i, j, q);
         return;
     }
-    for (int q = 0; q < kQ; ++q) slots[q] = q * m_cells + cell + kCx[q] + static_cast<long long>(kCy[q]) * m_nx;
+    for (int q = 0; q < kQ; ++q)
+        slots[q] = q * m_cells + cell + kCx[q] + static_cast<long long>(kCy[q]) * m_nx;
 }
 
-template <class Field>
-void Lattice::initialise(const Field& field) {
+template <class Field> void Lattice::initialise(const Field& field) {
     for (int j = 0; j < m_ny; ++j)
         for (int i = 0; i < m_nx; ++i) {
             const long long c = index(i, j);
             Real rho = 1, ux = 0, uy = 0;
             if (isFluid(c)) field(nodeX(i), nodeY(j), rho, ux, uy);
-            for (int q = 0; q < kQ; ++q) setPopulation(postSlot(c, q), q, equilibrium(q, rho, ux, uy));
+            for (int q = 0; q < kQ; ++q)
+                setPopulation(postSlot(c, q), q, equilibrium(q, rho, ux, uy));
         }
 }
 

@@ -46,7 +46,8 @@ int Lattice::addDisc(Real cx, Real cy, Real radius) {
     for (int j = 0; j < m_ny; ++j)
         for (int i = 0; i < m_nx; ++i) {
             const Real dx = nodeX(i) - cx, dy = nodeY(j) - cy;
-            if (isFluid(index(i, j)) && dx * dx + dy * dy < radius * radius) solids.push_back(index(i, j));
+            if (isFluid(index(i, j)) && dx * dx + dy * dy < radius * radius)
+                solids.push_back(index(i, j));
         }
     auto crossing = [=](Real px, Real py, int d) {
         // |p + t c - centre| = r, the root entering the disc.
@@ -57,7 +58,11 @@ int Lattice::addDisc(Real cx, Real cy, Real radius) {
         const Real disc = std::max(b * b - 4 * a * c, Real(0));
         return std::clamp((-b - std::sqrt(disc)) / (2 * a), Real(0), Real(1));
     };
-    for (long long c : solids) { m_flags[c] = kObstacle; m_side[c] = owner; m_solids.push_back(c); }
+    for (long long c : solids) {
+        m_flags[c] = kObstacle;
+        m_side[c] = owner;
+        m_solids.push_back(c);
+    }
     m_shapes.push_back(crossing);
     rebuildLinks();
     return owner;
@@ -66,7 +71,10 @@ int Lattice::addDisc(Real cx, Real cy, Real radius) {
 int Lattice::addPolygon(const std::vector<std::pair<Real, Real>>& vertices) {
     const int owner = static_cast<int>(m_owners.size());
     Real sx = 0, sy = 0;
-    for (const auto& v : vertices) { sx += v.first; sy += v.second; }
+    for (const auto& v : vertices) {
+        sx += v.first;
+        sy += v.second;
+    }
     m_owners.push_back({sx / vertices.size(), sy / vertices.size()});
     m_loads.emplace_back();
     for (int j = 0; j < m_ny; ++j)

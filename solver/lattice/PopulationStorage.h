@@ -25,12 +25,10 @@ const char* storageName(PopulationStorage storage);
 /// not on the O(1) weight ("DDF shifting": Lehmann, Krause, Amati et al. 2022, Phys. Rev. E 106,
 /// 015308). Opposite directions share a weight, so the shift of a slot does not depend on which
 /// of the two directions the AA pattern keeps in it.
-template <class S>
-struct StoredPopulation;
+template <class S> struct StoredPopulation;
 
 /// Double storage: the population itself.
-template <>
-struct StoredPopulation<double> {
+template <> struct StoredPopulation<double> {
     /// The population held by a stored value.
     static LBDEM_KERNEL_INLINE double load(double stored, double) { return stored; }
     /// The value that stores population f.
@@ -38,10 +36,11 @@ struct StoredPopulation<double> {
 };
 
 /// Float storage: the deviation f_i - w_i, widened to double for the accessors and boundary passes.
-template <>
-struct StoredPopulation<float> {
+template <> struct StoredPopulation<float> {
     /// The population held by a stored deviation.
-    static LBDEM_KERNEL_INLINE double load(float stored, double w) { return static_cast<double>(stored) + w; }
+    static LBDEM_KERNEL_INLINE double load(float stored, double w) {
+        return static_cast<double>(stored) + w;
+    }
     /// The deviation that stores population f, rounded to float.
     static LBDEM_KERNEL_INLINE float store(double f, double w) { return static_cast<float>(f - w); }
 };

@@ -39,7 +39,8 @@ void StabilityGuard::check(const Lattice& lattice) const {
     else if (!(rho > 0))
         std::snprintf(what, sizeof what, "the density is negative (%.3g)", rho);
     else
-        std::snprintf(what, sizeof what, "the lattice Mach number is %.3g, above the limit %.3g", mach, m_maxMach);
+        std::snprintf(what, sizeof what, "the lattice Mach number is %.3g, above the limit %.3g",
+                      mach, m_maxMach);
 
     const CollisionParams& p = lattice.setup().collision;
     std::string cause;

@@ -17,7 +17,8 @@ public:
     static constexpr Real kDefaultMaxMach = 0.5;
 
     /// A guard for a lattice of spacing h_m [m] (used to state positions in metres).
-    explicit StabilityGuard(Real h_m, int interval = kDefaultInterval, Real maxMach = kDefaultMaxMach);
+    explicit StabilityGuard(Real h_m, int interval = kDefaultInterval,
+                            Real maxMach = kDefaultMaxMach);
 
     /// True when the step count is a multiple of the check interval.
     bool due(long long step) const { return step % m_interval == 0; }

@@ -13,21 +13,21 @@ namespace {
 /// Run row(y) once for every row y < ny, each thread first its share of the rows above `last`,
 /// then its share of the rows 0..last: every thread ends in the rows up to `last`, which are then
 /// the freshest in the shared cache (Lattice::setLastSweptRow). Static shares, as schedule(static).
-template <class Row>
-void sweepRows(int ny, int last, bool parallel, const Row& row) {
+template <class Row> void sweepRows(int ny, int last, bool parallel, const Row& row) {
 #pragma omp parallel if (parallel)
     {
         const int threads = ompThreadCount(), t = ompThreadIndex();
         const int above = ny - 1 - last, band = last + 1;
-        for (int y = last + 1 + above * t / threads; y < last + 1 + above * (t + 1) / threads; ++y) row(y);
-        for (int y = band * t / threads; y < band * (t + 1) / threads; ++y) row(y);
+        for (int y = last + 1 + above * t / threads; y < last + 1 + above * (t + 1) / threads; ++y)
+            row(y);
+        for (int y = band * t / threads; y < band * (t + 1) / threads; ++y)
+            row(y);
     }
 }
 
 /// Collide the nine stored values g of one node in their own arithmetic: doubles are the
 /// populations f_i, floats the deviations f_i - w_i (PopulationStorage), collided as such.
-template <class S, class C>
-LBDEM_KERNEL_INLINE void collideStored(const C& collide, S* g) {
+template <class S, class C> LBDEM_KERNEL_INLINE void collideStored(const C& collide, S* g) {
     collide.template apply<S, std::is_same_v<S, float>>(g);
 }
 
@@ -37,35 +37,38 @@ LBDEM_KERNEL_INLINE void collideStored(const C& collide, S* g) {
 /// Rows are swept in the order of sweepRows.
 /// Pre: the boundary passes have filled the slots that solid neighbours send into the fluid.
 template <class S, class C>
-void collideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow, const C& collide) {
-    sweepRows(ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
-        const long long row = static_cast<long long>(y) * nx;
-        S* __restrict p0 = f + row;
-        S* __restrict p1 = f + cells + row;
-        S* __restrict p2 = f + 2 * cells + row;
-        S* __restrict p3 = f + 3 * cells + row;
-        S* __restrict p4 = f + 4 * cells + row;
-        S* __restrict p5 = f + 5 * cells + row;
-        S* __restrict p6 = f + 6 * cells + row;
-        S* __restrict p7 = f + 7 * cells + row;
-        S* __restrict p8 = f + 8 * cells + row;
-        auto node = [&](int x) __attribute__((always_inline)) {
-            S g[9] = {p0[x], p1[x], p2[x], p3[x], p4[x], p5[x], p6[x], p7[x], p8[x]};
-            collideStored(collide, g);
-            p0[x] = g[0];
-            p3[x] = g[1];
-            p4[x] = g[2];
-            p1[x] = g[3];
-            p2[x] = g[4];
-            p7[x] = g[5];
-            p8[x] = g[6];
-            p5[x] = g[7];
-            p6[x] = g[8];
-        };
-        // Each node touches only its own values, so the loop carries no dependence.
+void collideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow,
+                    const C& collide) {
+    sweepRows(
+        ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
+            const long long row = static_cast<long long>(y) * nx;
+            S* __restrict p0 = f + row;
+            S* __restrict p1 = f + cells + row;
+            S* __restrict p2 = f + 2 * cells + row;
+            S* __restrict p3 = f + 3 * cells + row;
+            S* __restrict p4 = f + 4 * cells + row;
+            S* __restrict p5 = f + 5 * cells + row;
+            S* __restrict p6 = f + 6 * cells + row;
+            S* __restrict p7 = f + 7 * cells + row;
+            S* __restrict p8 = f + 8 * cells + row;
+            auto node = [&](int x) __attribute__((always_inline)) {
+                S g[9] = {p0[x], p1[x], p2[x], p3[x], p4[x], p5[x], p6[x], p7[x], p8[x]};
+                collideStored(collide, g);
+                p0[x] = g[0];
+                p3[x] = g[1];
+                p4[x] = g[2];
+                p1[x] = g[3];
+                p2[x] = g[4];
+                p7[x] = g[5];
+                p8[x] = g[6];
+                p5[x] = g[7];
+                p6[x] = g[8];
+            };
+            // Each node touches only its own values, so the loop carries no dependence.
 #pragma omp simd
-        for (int x = 0; x < nx; ++x) node(x);
-    });
+            for (int x = 0; x < nx; ++x)
+                node(x);
+        });
 }
 
 /// AA step from an odd step count: node x finds the population arriving along c_i in slot
@@ -74,45 +77,50 @@ void collideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRo
 /// is in place and free of races between nodes, rows and threads. Periodic wrap on all sides.
 /// Stored values convert and rows are swept as in collideInPlace.
 template <class S, class C>
-void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow, const C& collide) {
-    sweepRows(ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
-        const long long row = static_cast<long long>(y) * nx;
-        const long long rowN = static_cast<long long>(y + 1 == ny ? 0 : y + 1) * nx;
-        const long long rowS = static_cast<long long>(y == 0 ? ny - 1 : y - 1) * nx;
-        S* __restrict p0 = f + row;              // slot i of x + c_i, by direction i
-        S* __restrict p1 = f + cells + row;
-        S* __restrict p2 = f + 2 * cells + rowN;
-        S* __restrict p3 = f + 3 * cells + row;
-        S* __restrict p4 = f + 4 * cells + rowS;
-        S* __restrict p5 = f + 5 * cells + rowN;
-        S* __restrict p6 = f + 6 * cells + rowN;
-        S* __restrict p7 = f + 7 * cells + rowS;
-        S* __restrict p8 = f + 8 * cells + rowS;
-        auto node = [&](int x, int xm, int xp) __attribute__((always_inline)) {
-            S g[9] = {p0[x], p3[xm], p4[x], p1[xp], p2[x], p7[xm], p8[xp], p5[xp], p6[xm]};
-            collideStored(collide, g);
-            p0[x] = g[0];
-            p1[xp] = g[1];
-            p2[x] = g[2];
-            p3[xm] = g[3];
-            p4[x] = g[4];
-            p5[xp] = g[5];
-            p6[xm] = g[6];
-            p7[xm] = g[7];
-            p8[xp] = g[8];
-        };
-        node(0, nx - 1, 1 % nx);
+void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow,
+                          const C& collide) {
+    sweepRows(
+        ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
+            const long long row = static_cast<long long>(y) * nx;
+            const long long rowN = static_cast<long long>(y + 1 == ny ? 0 : y + 1) * nx;
+            const long long rowS = static_cast<long long>(y == 0 ? ny - 1 : y - 1) * nx;
+            S* __restrict p0 = f + row; // slot i of x + c_i, by direction i
+            S* __restrict p1 = f + cells + row;
+            S* __restrict p2 = f + 2 * cells + rowN;
+            S* __restrict p3 = f + 3 * cells + row;
+            S* __restrict p4 = f + 4 * cells + rowS;
+            S* __restrict p5 = f + 5 * cells + rowN;
+            S* __restrict p6 = f + 6 * cells + rowN;
+            S* __restrict p7 = f + 7 * cells + rowS;
+            S* __restrict p8 = f + 8 * cells + rowS;
+            auto node = [&](int x, int xm, int xp) __attribute__((always_inline)) {
+                S g[9] = {p0[x], p3[xm], p4[x], p1[xp], p2[x], p7[xm], p8[xp], p5[xp], p6[xm]};
+                collideStored(collide, g);
+                p0[x] = g[0];
+                p1[xp] = g[1];
+                p2[x] = g[2];
+                p3[xm] = g[3];
+                p4[x] = g[4];
+                p5[xp] = g[5];
+                p6[xm] = g[6];
+                p7[xm] = g[7];
+                p8[xp] = g[8];
+            };
+            node(0, nx - 1, 1 % nx);
 #pragma omp simd
-        for (int x = 1; x < nx - 1; ++x) node(x, x - 1, x + 1);
-        if (nx > 1) node(nx - 1, nx - 2, 0);
-    });
+            for (int x = 1; x < nx - 1; ++x)
+                node(x, x - 1, x + 1);
+            if (nx > 1) node(nx - 1, nx - 2, 0);
+        });
 }
 
 /// One AA step of the bulk kernel on the stored values f, from an odd or an even step count.
 template <class S, class C>
 void aaStep(S* f, bool odd, int nx, int ny, long long cells, int lastRow, const C& collide) {
-    if (odd) streamCollideInPlace(f, nx, ny, cells, lastRow, collide);
-    else collideInPlace(f, nx, ny, cells, lastRow, collide);
+    if (odd)
+        streamCollideInPlace(f, nx, ny, cells, lastRow, collide);
+    else
+        collideInPlace(f, nx, ny, cells, lastRow, collide);
 }
 
 /// f[slot] = f[source] + add for every copy link, on the stored values: source and slot hold
@@ -129,9 +137,12 @@ void applyCopyLinks(S* f, const Links& links, long long parity, bool parallel) {
 void Lattice::applyLinks() {
     const long long parity = m_step & 1;
     const bool parallel = m_cells >= kParallelMinCells;
-    if (m_setup.storage == PopulationStorage::Float) applyCopyLinks(m_f32.data(), m_copyLinks, parity, parallel);
-    else applyCopyLinks(m_f64.data(), m_copyLinks, parity, parallel);
-    // Constant pressure (anti-bounce-back, Ginzburg et al. 2008): f_in = -f_out + 2 f_in^eq,sym(rho_b, u).
+    if (m_setup.storage == PopulationStorage::Float)
+        applyCopyLinks(m_f32.data(), m_copyLinks, parity, parallel);
+    else
+        applyCopyLinks(m_f64.data(), m_copyLinks, parity, parallel);
+    // Constant pressure (anti-bounce-back, Ginzburg et al. 2008): f_in = -f_out + 2
+    // f_in^eq,sym(rho_b, u).
     for (const auto& link : m_pressureLinks) {
         Real ux, uy;
         velocity(link.node, ux, uy);
@@ -139,7 +150,8 @@ void Lattice::applyLinks() {
         const Real cu = kCx[in] * ux + kCy[in] * uy;
         const Real sym = kW[in] * link.rho * (1.0 + 4.5 * cu * cu - 1.5 * (ux * ux + uy * uy));
         // On the populations, not the stored values: the shift would not cancel in -f_out + 2 sym.
-        setPopulation(inSlot(link.node, in), in, -population(postSlot(link.node, link.dir), link.dir) + 2.0 * sym);
+        setPopulation(inSlot(link.node, in), in,
+                      -population(postSlot(link.node, link.dir), link.dir) + 2.0 * sym);
     }
     // Interpolated bounce-back, Bouzidi, Firdaouss & Lallemand (2001), linear two-branch form.
     for (const auto& link : m_obstacleLinks) {
@@ -147,21 +159,25 @@ void Lattice::applyLinks() {
         const Real out = population(postSlot(link.node, d), d);
         Real value;
         if (link.q < 0.5 && link.interior)
-            value = 2 * link.q * out + (1 - 2 * link.q) * population(postSlot(neighbour(link.node, in), d), d);
+            value = 2 * link.q * out +
+                    (1 - 2 * link.q) * population(postSlot(neighbour(link.node, in), d), d);
         else if (link.q < 0.5)
             value = out;
         else
-            value = out / (2 * link.q) + (2 * link.q - 1) / (2 * link.q) * population(postSlot(link.node, in), in);
+            value = out / (2 * link.q) +
+                    (2 * link.q - 1) / (2 * link.q) * population(postSlot(link.node, in), in);
         setPopulation(inSlot(link.node, in), in, value);
     }
 }
 
 void Lattice::computeLoads() {
-    for (auto& load : m_loads) load = ObstacleLoad{};
+    for (auto& load : m_loads)
+        load = ObstacleLoad{};
     for (const auto& link : m_obstacleLinks) {
         // Momentum exchange (Ladd 1994): the wall receives (f_out + f_in) c_out per link.
         const int d = link.dir, in = kOpposite[d];
-        const Real push = population(postSlot(link.node, d), d) + population(inSlot(link.node, in), in);
+        const Real push =
+            population(postSlot(link.node, d), d) + population(inSlot(link.node, in), in);
         const Real dfx = push * kCx[d], dfy = push * kCy[d];
         const int i = static_cast<int>(link.node % m_nx), j = static_cast<int>(link.node / m_nx);
         const Real rx = nodeX(i) + link.q * kCx[d] - m_owners[link.owner].cx;
@@ -183,7 +199,8 @@ void Lattice::applyZouHe() {
         const Real sign = s == 0 ? 1.0 : -1.0; // inward normal along x
         for (long long c : m_zouHeCells[s]) {
             Real f[kQ];
-            for (int q = 0; q < kQ; ++q) f[q] = population(inSlot(c, q), q);
+            for (int q = 0; q < kQ; ++q)
+                f[q] = population(inSlot(c, q), q);
             // Known: rest, N, S and the three leaving the domain (W, NW, SW on the left).
             const int out = s == 0 ? 3 : 1, outN = s == 0 ? 6 : 5, outS = s == 0 ? 7 : 8;
             const Real tangential = f[0] + f[2] + f[4], leaving = f[out] + f[outN] + f[outS];
@@ -208,11 +225,11 @@ void Lattice::applyZouHe() {
 void Lattice::recordIncoming() {
     m_recorded.resize(m_recordedCells.size() * kQ); // keeps its capacity between steps
     for (std::size_t k = 0; k < m_recordedCells.size(); ++k)
-        for (int q = 0; q < kQ; ++q) m_recorded[k * kQ + q] = population(inSlot(m_recordedCells[k], q), q);
+        for (int q = 0; q < kQ; ++q)
+            m_recorded[k * kQ + q] = population(inSlot(m_recordedCells[k], q), q);
 }
 
-template <class C>
-void Lattice::runStep(const C& collide) {
+template <class C> void Lattice::runStep(const C& collide) {
     applyLinks();
     if (!m_obstacleLinks.empty()) computeLoads();
     applyZouHe();
@@ -220,7 +237,8 @@ void Lattice::runStep(const C& collide) {
     const int lastRow = m_lastSweptRow >= 0 && m_lastSweptRow < m_ny ? m_lastSweptRow : m_ny - 1;
     if (m_setup.storage == PopulationStorage::Float)
         aaStep(m_f32.data(), m_step & 1, m_nx, m_ny, m_cells, lastRow, collide);
-    else aaStep(m_f64.data(), m_step & 1, m_nx, m_ny, m_cells, lastRow, collide);
+    else
+        aaStep(m_f64.data(), m_step & 1, m_nx, m_ny, m_cells, lastRow, collide);
     ++m_step;
     resetSolids();
 }
@@ -233,16 +251,22 @@ void Lattice::step() {
     // One dispatch per step: each branch runs a fully inlined kernel for one model.
     switch (p.model) {
     case CollisionModel::Bgk:
-        if (force) runStep(BgkCollision<true>{sNu, fx, fy});
-        else runStep(BgkCollision<false>{sNu, fx, fy});
+        if (force)
+            runStep(BgkCollision<true>{sNu, fx, fy});
+        else
+            runStep(BgkCollision<false>{sNu, fx, fy});
         break;
     case CollisionModel::Mrt:
-        if (force) runStep(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else runStep(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        if (force)
+            runStep(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        else
+            runStep(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
         break;
     case CollisionModel::MrtLes:
-        if (force) runStep(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else runStep(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        if (force)
+            runStep(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        else
+            runStep(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
         break;
     }
 }

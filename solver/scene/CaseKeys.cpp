@@ -13,7 +13,8 @@ void declareTopLevel(CaseSchema& s) {
                  [](CaseSpec& c) -> int& { return c.schema; });
     s.addText("", "name", "Case name; results go to a folder of this name.",
               [](CaseSpec& c) -> std::string& { return c.name; });
-    s.addChoice("", "scene", sceneNames(), "Scene builder: the paper's collapse or a verification flow.",
+    s.addChoice("", "scene", sceneNames(),
+                "Scene builder: the paper's collapse or a verification flow.",
                 [](CaseSpec& c) -> std::string& { return c.scene; });
 }
 
@@ -28,7 +29,8 @@ void declareDomain(CaseSchema& s) {
     s.addReal("domain", "gravity_m_s2", "m/s^2", 0, 100, "Magnitude of gravity.",
               [](CaseSpec& c) -> double& { return c.domain.gravity_m_s2; });
     s.addChoice("domain", "top", {"wall", "free_slip", "pressure", "periodic"},
-                "Top boundary of the fluid.", [](CaseSpec& c) -> std::string& { return c.domain.top; });
+                "Top boundary of the fluid.",
+                [](CaseSpec& c) -> std::string& { return c.domain.top; });
     s.addChoice("domain", "right", {"wall", "free_slip", "pressure", "periodic"},
                 "Right boundary of the fluid.",
                 [](CaseSpec& c) -> std::string& { return c.domain.right; });
@@ -176,9 +178,10 @@ void declareRun(CaseSchema& s) {
               [](CaseSpec& c) -> double& { return c.run.output_interval_tc; });
     s.addInteger("run", "threads", "-", 0, 1024, "OpenMP threads; 0 uses every core.",
                  [](CaseSpec& c) -> int& { return c.run.threads; });
-    s.addReal("run", "gate_release_tc", "tau_c", 0, 1e4,
-              "Column collapse: the gate holds the column until this time (0: it opens at the start).",
-              [](CaseSpec& c) -> double& { return c.run.gate_release_tc; });
+    s.addReal(
+        "run", "gate_release_tc", "tau_c", 0, 1e4,
+        "Column collapse: the gate holds the column until this time (0: it opens at the start).",
+        [](CaseSpec& c) -> double& { return c.run.gate_release_tc; });
 }
 
 void declareOutput(CaseSchema& s) {

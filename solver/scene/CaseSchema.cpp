@@ -11,11 +11,16 @@ namespace lbdem::solver {
 
 std::string_view describeType(ParamType type) {
     switch (type) {
-    case ParamType::Bool: return "true or false";
-    case ParamType::Integer: return "a whole number";
-    case ParamType::Real: return "a number";
-    case ParamType::Text: return "a quoted string";
-    case ParamType::Choice: return "a quoted word";
+    case ParamType::Bool:
+        return "true or false";
+    case ParamType::Integer:
+        return "a whole number";
+    case ParamType::Real:
+        return "a number";
+    case ParamType::Text:
+        return "a quoted string";
+    case ParamType::Choice:
+        return "a quoted word";
     }
     return "a value";
 }
@@ -55,7 +60,8 @@ ParamDecl makeDecl(const std::string& section, const std::string& key, ParamType
 std::string ParamDecl::describeRange() const {
     if (type == ParamType::Choice) {
         std::string words;
-        for (const auto& choice : choices) words += (words.empty() ? "" : ", ") + choice;
+        for (const auto& choice : choices)
+            words += (words.empty() ? "" : ", ") + choice;
         return "one of " + words;
     }
     if (type != ParamType::Integer && type != ParamType::Real) return {};
@@ -89,7 +95,8 @@ std::string ParamDecl::check(const ParamValue& value) const {
         if (const auto* i = std::get_if<long long>(&value)) {
             number = static_cast<double>(*i);
         } else if (const auto* d = std::get_if<double>(&value)) {
-            if (type == ParamType::Integer) return "expected a whole number, got " + formatNumber(*d);
+            if (type == ParamType::Integer)
+                return "expected a whole number, got " + formatNumber(*d);
             number = *d;
         } else {
             return std::string("expected ") + std::string(describeType(type)) + ", got " +
@@ -110,7 +117,9 @@ const CaseSchema& CaseSchema::instance() {
     return schema;
 }
 
-CaseSchema::CaseSchema() { declareCaseKeys(*this); }
+CaseSchema::CaseSchema() {
+    declareCaseKeys(*this);
+}
 
 const ParamDecl* CaseSchema::find(std::string_view path) const {
     for (const auto& param : m_params)
@@ -122,7 +131,8 @@ std::vector<std::string> CaseSchema::sections() const {
     std::vector<std::string> names;
     for (const auto& param : m_params) {
         bool seen = false;
-        for (const auto& name : names) seen = seen || name == param.section;
+        for (const auto& name : names)
+            seen = seen || name == param.section;
         if (!seen) names.push_back(param.section);
     }
     return names;
@@ -131,12 +141,13 @@ std::vector<std::string> CaseSchema::sections() const {
 std::vector<std::string> CaseSchema::paths() const {
     std::vector<std::string> result;
     result.reserve(m_params.size());
-    for (const auto& param : m_params) result.push_back(param.path());
+    for (const auto& param : m_params)
+        result.push_back(param.path());
     return result;
 }
 
-void CaseSchema::addBool(const std::string& section, const std::string& key,
-                         const std::string& doc, std::function<bool&(CaseSpec&)> field) {
+void CaseSchema::addBool(const std::string& section, const std::string& key, const std::string& doc,
+                         std::function<bool&(CaseSpec&)> field) {
     ParamDecl decl = makeDecl(section, key, ParamType::Bool, "-", doc);
     decl.get = [field](const CaseSpec& spec) {
         return ParamValue{field(const_cast<CaseSpec&>(spec))};
@@ -148,8 +159,8 @@ void CaseSchema::addBool(const std::string& section, const std::string& key,
 }
 
 void CaseSchema::addInteger(const std::string& section, const std::string& key,
-                            const std::string& unit, double min, double max,
-                            const std::string& doc, std::function<int&(CaseSpec&)> field) {
+                            const std::string& unit, double min, double max, const std::string& doc,
+                            std::function<int&(CaseSpec&)> field) {
     ParamDecl decl = makeDecl(section, key, ParamType::Integer, unit, doc, min, max);
     decl.get = [field](const CaseSpec& spec) {
         return ParamValue{static_cast<long long>(field(const_cast<CaseSpec&>(spec)))};
@@ -176,8 +187,8 @@ void CaseSchema::addReal(const std::string& section, const std::string& key,
     m_params.push_back(std::move(decl));
 }
 
-void CaseSchema::addText(const std::string& section, const std::string& key,
-                         const std::string& doc, std::function<std::string&(CaseSpec&)> field) {
+void CaseSchema::addText(const std::string& section, const std::string& key, const std::string& doc,
+                         std::function<std::string&(CaseSpec&)> field) {
     ParamDecl decl = makeDecl(section, key, ParamType::Text, "-", doc);
     decl.get = [field](const CaseSpec& spec) {
         return ParamValue{field(const_cast<CaseSpec&>(spec))};

@@ -26,13 +26,13 @@ struct ParamDecl {
     std::string section; ///< TOML table, empty for top-level keys
     std::string key;     ///< key inside the table
     ParamType type = ParamType::Real;
-    std::string unit;    ///< SI unit, or "-" for dimensionless
-    std::string doc;     ///< one sentence
+    std::string unit;                                      ///< SI unit, or "-" for dimensionless
+    std::string doc;                                       ///< one sentence
     double min = -std::numeric_limits<double>::infinity(); ///< inclusive lower bound (numbers)
     double max = std::numeric_limits<double>::infinity();  ///< inclusive upper bound (numbers)
-    std::vector<std::string> choices;                       ///< allowed words (Choice)
-    std::function<ParamValue(const CaseSpec&)> get;         ///< read the value from a spec
-    std::function<void(CaseSpec&, const ParamValue&)> set;  ///< store a checked value
+    std::vector<std::string> choices;                      ///< allowed words (Choice)
+    std::function<ParamValue(const CaseSpec&)> get;        ///< read the value from a spec
+    std::function<void(CaseSpec&, const ParamValue&)> set; ///< store a checked value
 
     /// "section.key", or "key" for top-level keys.
     std::string path() const { return section.empty() ? key : section + "." + key; }

@@ -14,12 +14,14 @@ constexpr std::size_t kMaxNameLength = 100;
 /// '_' and '-', not starting with '.', at most kMaxNameLength characters.
 std::string nameProblem(const std::string& name) {
     if (name.empty()) return "is empty; the outputs go to a folder of this name";
-    if (name.size() > kMaxNameLength) return "is longer than " + std::to_string(kMaxNameLength) + " characters";
+    if (name.size() > kMaxNameLength)
+        return "is longer than " + std::to_string(kMaxNameLength) + " characters";
     if (name.front() == '.') return "must not start with '.'; it becomes a folder name";
     for (const char c : name) {
-        const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
-                          c == '_' || c == '-';
-        if (!safe) return "may hold only letters, digits, '.', '_' and '-' (it becomes a folder name)";
+        const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                          (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
+        if (!safe)
+            return "may hold only letters, digits, '.', '_' and '-' (it becomes a folder name)";
     }
     return {};
 }
@@ -28,21 +30,27 @@ std::string nameProblem(const std::string& name) {
 
 std::vector<CaseProblem> validateCase(const CaseSpec& spec) {
     std::vector<CaseProblem> problems;
-    if (const std::string problem = nameProblem(spec.name); !problem.empty()) problems.push_back({"name", problem});
+    if (const std::string problem = nameProblem(spec.name); !problem.empty())
+        problems.push_back({"name", problem});
     if (spec.scene == sceneName(SceneKind::ColumnCollapse)) {
         if (spec.grains.count < 1)
-            problems.push_back({"grains.count", "must be at least 1: a column collapse needs grains"});
+            problems.push_back(
+                {"grains.count", "must be at least 1: a column collapse needs grains"});
         if (spec.domain.gravity_m_s2 <= 0)
-            problems.push_back({"domain.gravity_m_s2", "must be positive: the column settles under gravity and "
-                                                       "time is counted in tau_c = sqrt(H_i / g)"});
+            problems.push_back({"domain.gravity_m_s2",
+                                "must be positive: the column settles under gravity and "
+                                "time is counted in tau_c = sqrt(H_i / g)"});
     }
     if (spec.fluid.tau != 0.0 && spec.fluid.tau <= 0.5)
-        problems.push_back({"fluid.tau", "must exceed 0.5 (or be 0 to derive it from target_mach)"});
-    if (spec.grains.count > 0 && spec.grains.tangential_stiffness_n_m > spec.grains.normal_stiffness_n_m * 10)
+        problems.push_back(
+            {"fluid.tau", "must exceed 0.5 (or be 0 to derive it from target_mach)"});
+    if (spec.grains.count > 0 &&
+        spec.grains.tangential_stiffness_n_m > spec.grains.normal_stiffness_n_m * 10)
         problems.push_back({"grains.tangential_stiffness_n_m",
                             "is more than ten times the normal stiffness, which is unphysical"});
     if (spec.run.output_interval_tc > spec.run.end_tc && spec.run.end_tc > 0)
-        problems.push_back({"run.output_interval_tc", "is longer than run.end_tc: nothing would be written"});
+        problems.push_back(
+            {"run.output_interval_tc", "is longer than run.end_tc: nothing would be written"});
     return problems;
 }
 

@@ -24,7 +24,8 @@ namespace {
 /// across gaps up to one largest diameter d_max (see mainMass): a lone disc parting from or
 /// rejoining a chain then moves the front by at most its own diameter plus a contact gap.
 constexpr double kContactGapOfDmin = 0.05;
-/// The front window (flowing front layer, base stress) spans this many mean diameters behind the front.
+/// The front window (flowing front layer, base stress) spans this many mean diameters behind the
+/// front.
 constexpr double kFrontLengthInDiameters = 15.0;
 /// Failure-plane probe: from the gate's foot at this angle to the slope [deg] (Rankine active
 /// wedge 45 + phi/2 for phi = 26 deg), sampled at this many points.
@@ -49,7 +50,8 @@ lattice::LatticeSetup columnLatticeSetup(const CaseSpec& spec, const Plan& plan)
     setup.left.type = setup.bottom.type = lattice::SideType::Wall; // no-slip floor and back wall
     setup.top.type = sideOf(spec.domain.top);
     setup.right.type = sideOf(spec.domain.right);
-    if (setup.right.type == lattice::SideType::Periodic) setup.left.type = lattice::SideType::Periodic;
+    if (setup.right.type == lattice::SideType::Periodic)
+        setup.left.type = lattice::SideType::Periodic;
     return setup;
 }
 
@@ -73,8 +75,8 @@ coupling::CouplingParams couplingParams(const CaseSpec& spec, const Plan& plan) 
 }
 
 GrainArrays viewOf(const dem::Particles& p) {
-    return {p.size(), p.x.data(), p.y.data(), p.radius.data(), p.vx.data(), p.vy.data(),
-            p.omega.data(), p.mass.data(), p.inertia.data()};
+    return {p.size(),    p.x.data(),     p.y.data(),    p.radius.data(), p.vx.data(),
+            p.vy.data(), p.omega.data(), p.mass.data(), p.inertia.data()};
 }
 
 class ColumnCollapseRunner final : public SceneRunner {
@@ -84,7 +86,8 @@ public:
         const double dMean = spec.grains.d_min_m * (1 + spec.grains.size_ratio) / 2;
         m_params.contact_gap_m = kContactGapOfDmin * spec.grains.d_min_m;
         // The hole a lone disc leaves in a touching chain: its diameter plus two contact gaps.
-        m_params.bridge_gap_m = spec.grains.d_min_m * spec.grains.size_ratio + 2 * m_params.contact_gap_m;
+        m_params.bridge_gap_m =
+            spec.grains.d_min_m * spec.grains.size_ratio + 2 * m_params.contact_gap_m;
         m_params.column_width_m = m_column.initialWidth();
         m_params.slope_rad = spec.domain.slope_deg * kPi / 180;
         m_params.gravity_m_s2 = spec.domain.gravity_m_s2;
@@ -116,7 +119,8 @@ public:
         t = timer.lap(Stage::StreamCollide, t);
         m_coupling->collectForces();
         t = timer.lap(Stage::HydrodynamicForces, t);
-        // After the loads: they read this step's post-collision populations as the kernel left them.
+        // After the loads: they read this step's post-collision populations as the kernel left
+        // them.
         m_layer->apply(*m_lattice);
         t = timer.lap(Stage::StreamCollide, t);
         // After collectForces: covered nodes hold leftovers of the bulk kernel until then.
@@ -131,12 +135,15 @@ public:
     void fillSnapshot(Snapshot& snapshot, int downsample) const override {
         m_column.fillSnapshot(snapshot);
         const auto d = computeMassDiagnostics(viewOf(m_column.system().particles()), m_params);
-        for (const auto& [x, y] : d.outline) snapshot.outline.emplace_back(float(x), float(y));
+        for (const auto& [x, y] : d.outline)
+            snapshot.outline.emplace_back(float(x), float(y));
         if (m_lattice) {
             m_guard->check(*m_lattice); // no output from a diverged state
             snapshot.fluid.emplace();
-            const LatticeScales scales{m_plan.nx, m_plan.ny, m_plan.h_m, m_plan.dt_s, m_spec.fluid.density_kg_m3};
-            fillFluidSnapshot(*m_lattice, scales, downsample, &m_coupling->solidFraction(), *snapshot.fluid);
+            const LatticeScales scales{m_plan.nx, m_plan.ny, m_plan.h_m, m_plan.dt_s,
+                                       m_spec.fluid.density_kg_m3};
+            fillFluidSnapshot(*m_lattice, scales, downsample, &m_coupling->solidFraction(),
+                              *snapshot.fluid);
             snapshot.probes["pore_pressure_failure_plane"] = failurePlaneProbe();
         }
     }
@@ -147,7 +154,8 @@ public:
         m["runout_m"] = d.front_x_m;
         m["runout_normalised"] = d.runout_normalised;
         m["height_m"] = d.height_m;
-        m["height_normalised"] = m_column.initialHeight() > 0 ? d.height_m / m_column.initialHeight() : 0;
+        m["height_normalised"] =
+            m_column.initialHeight() > 0 ? d.height_m / m_column.initialHeight() : 0;
         m["kinetic_energy_j_m"] = d.kinetic_energy_j_m;
         m["ke_over_ep0"] = d.ke_over_ep0;
         m["packing_fraction"] = d.packing_fraction;
@@ -178,7 +186,8 @@ public:
 
     void restore(const StateArchive& archive) override {
         restoreColumnState(archive, m_column);
-        dem::checkRestoredGrains(m_column.system().particles(), m_spec.domain.width_m, m_spec.domain.height_m);
+        dem::checkRestoredGrains(m_column.system().particles(), m_spec.domain.width_m,
+                                 m_spec.domain.height_m);
         if (!m_lattice) return;
         restoreLatticeState(archive, *m_lattice);
         coupling::CouplingState state;
@@ -216,7 +225,8 @@ private:
         for (const auto& c : m_column.system().contacts()) {
             if (c.j >= 0) continue;
             const double dx = c.px - p.x[c.i], dy = c.py - p.y[c.i], d = std::hypot(dx, dy);
-            if (d > 0) force -= (c.fn * dy + c.ft * dx) / d; // y-force on the disc (wall contact law)
+            if (d > 0)
+                force -= (c.fn * dy + c.ft * dx) / d; // y-force on the disc (wall contact law)
         }
         return force;
     }
@@ -237,7 +247,8 @@ private:
         const double angle = kFailurePlaneDeg * kPi / 180;
         const double width = m_column.initialWidth(), height = m_column.initialHeight();
         const double length = std::min(width / std::cos(angle), height / std::sin(angle));
-        const double scale = m_spec.fluid.density_kg_m3 * lattice::kCs2 * std::pow(m_plan.h_m / m_plan.dt_s, 2);
+        const double scale =
+            m_spec.fluid.density_kg_m3 * lattice::kCs2 * std::pow(m_plan.h_m / m_plan.dt_s, 2);
         SnapshotProbe probe;
         probe.quantity = "excess_pore_pressure_pa";
         for (int k = 0; k < kProbePoints; ++k) {
@@ -249,7 +260,8 @@ private:
             probe.s.push_back(s);
             probe.x.push_back(x);
             probe.y.push_back(y);
-            const bool inFluid = m_lattice->isFluid(cell) && m_coupling->solidFraction()[cell] < 0.5;
+            const bool inFluid =
+                m_lattice->isFluid(cell) && m_coupling->solidFraction()[cell] < 0.5;
             probe.value.push_back(inFluid ? (m_lattice->density(cell) - 1.0) * scale
                                           : std::numeric_limits<double>::quiet_NaN());
         }
@@ -271,7 +283,8 @@ private:
     /// by design) over the mean speed of the main mass's grains; 0 while the mass is at rest.
     double farFieldSpeedRatio() const {
         std::vector<char> inLayer(static_cast<std::size_t>(m_lattice->cells()), 0);
-        for (std::size_t k = 0; k < m_layer->nodeCount(); ++k) inLayer[m_layer->cellAt(k)] = 1;
+        for (std::size_t k = 0; k < m_layer->nodeCount(); ++k)
+            inLayer[m_layer->cellAt(k)] = 1;
         const double width = m_column.initialWidth(), height = m_column.initialHeight();
         const double reach = kFarFieldWidths * width, velocityScale = m_plan.h_m / m_plan.dt_s;
         double sum = 0;
@@ -280,15 +293,19 @@ private:
             for (int i = 0; i < m_plan.nx; ++i) {
                 const double x = (i + 0.5) * m_plan.h_m, y = (j + 0.5) * m_plan.h_m;
                 const double dx = std::max(x - width, 0.0), dy = std::max(y - height, 0.0);
-                const long long cell = m_lattice->index(m_lattice->firstFluidX() + i, m_lattice->firstFluidY() + j);
-                if (dx * dx + dy * dy <= reach * reach || inLayer[cell] || !m_lattice->isFluid(cell)) continue;
+                const long long cell =
+                    m_lattice->index(m_lattice->firstFluidX() + i, m_lattice->firstFluidY() + j);
+                if (dx * dx + dy * dy <= reach * reach || inLayer[cell] ||
+                    !m_lattice->isFluid(cell))
+                    continue;
                 double ux, uy;
                 m_lattice->velocity(cell, ux, uy);
                 sum += (ux * ux + uy * uy) * velocityScale * velocityScale;
                 ++nodes;
             }
         const auto& p = m_column.system().particles();
-        const std::vector<bool> main = mainMass(viewOf(p), m_params.contact_gap_m, m_params.bridge_gap_m);
+        const std::vector<bool> main =
+            mainMass(viewOf(p), m_params.contact_gap_m, m_params.bridge_gap_m);
         double speed = 0;
         std::size_t grains = 0;
         for (std::size_t k = 0; k < p.size(); ++k)
@@ -304,7 +321,8 @@ private:
     std::optional<lattice::Lattice> m_lattice;
     std::optional<coupling::Coupling> m_coupling;
     std::optional<lattice::StabilityGuard> m_guard;
-    std::optional<lattice::AbsorbingLayer> m_layer; // sponge inside the pressure sides (may hold no node)
+    std::optional<lattice::AbsorbingLayer>
+        m_layer; // sponge inside the pressure sides (may hold no node)
 };
 
 } // namespace

@@ -69,11 +69,13 @@ ColumnScene::ColumnScene(const CaseSpec& spec, const Plan& plan, dem::Packing pa
 void ColumnScene::build(const CaseSpec& spec) {
     const double width = spec.domain.width_m, height = spec.domain.height_m;
     if (m_packing.width > width || m_packing.height > height)
-        throw InputError("the column (" + std::to_string(m_packing.width) + " m wide, " +
-                         std::to_string(m_packing.height) + " m high) does not fit the domain (domain.width = " +
-                         std::to_string(width) + " m, domain.height = " + std::to_string(height) + " m)");
+        throw InputError(
+            "the column (" + std::to_string(m_packing.width) + " m wide, " +
+            std::to_string(m_packing.height) + " m high) does not fit the domain (domain.width = " +
+            std::to_string(width) + " m, domain.height = " + std::to_string(height) + " m)");
     if (!m_packing.converged)
-        throw SimulationError("the packing generator reached " + std::to_string(m_packing.fraction) +
+        throw SimulationError("the packing generator reached " +
+                              std::to_string(m_packing.fraction) +
                               " instead of grains.packing = " + std::to_string(m_packing.target));
     m_system.reserve(m_packing.x.size());
     m_system.addWall(Vec2(0, 0), Vec2(width, 0));
@@ -99,7 +101,8 @@ void ColumnScene::settleBeforeRelease() {
     m_system.setThreads(1);
     m_system.computeForces();
     while (m_system.time() < kMaxSettleTime) {
-        for (int k = 0; k < kSettleCheckSteps; ++k) m_system.step(m_dt);
+        for (int k = 0; k < kSettleCheckSteps; ++k)
+            m_system.step(m_dt);
         if (m_system.maxSpeed() < kSettledSpeed) break;
     }
     m_settleTime = m_system.time();
@@ -137,7 +140,8 @@ void fillSnapshotGrains(const dem::DemSystem& system, bool withHydro, Snapshot& 
     SnapshotGrains& g = snapshot.grains;
     auto copy = [n](const std::vector<Real>& from, std::vector<float>& to) {
         to.resize(n);
-        for (std::size_t k = 0; k < n; ++k) to[k] = static_cast<float>(from[k]);
+        for (std::size_t k = 0; k < n; ++k)
+            to[k] = static_cast<float>(from[k]);
     };
     copy(p.x, g.x);
     copy(p.y, g.y);

@@ -16,17 +16,18 @@ namespace lbdem::solver {
 dem::Material grainMaterial(const GrainSpec& grains);
 
 /// Acceleration on the grains: g (sin theta, -cos theta) with +x downslope, times the buoyancy
-/// factor (1 - rho_f / rho_s) when the case is submerged (docs/design.md §5: gravity acts on grains only).
+/// factor (1 - rho_f / rho_s) when the case is submerged (docs/design.md §5: gravity acts on grains
+/// only).
 Vec2 grainGravity(const CaseSpec& spec);
 
 /// The packing request of a case's column (grains section; gravity of the domain).
 dem::PackingRequest packingRequest(const CaseSpec& spec);
 
 /// Column collapse on a slope: a packing of width L_i from the generator rests on the floor
-/// against the left wall, held by a gate at x = L_i that is removed at t = 0 (or at run.gate_release_tc). Walls: floor
-/// y = 0 and left wall x = 0 over the domain, a right wall at the domain width. Dry cases
-/// allocate no fluid; submerged ones add buoyancy and take hydrodynamic loads through the
-/// particles' external force and torque arrays (held fixed across advance()).
+/// against the left wall, held by a gate at x = L_i that is removed at t = 0 (or at
+/// run.gate_release_tc). Walls: floor y = 0 and left wall x = 0 over the domain, a right wall at
+/// the domain width. Dry cases allocate no fluid; submerged ones add buoyancy and take hydrodynamic
+/// loads through the particles' external force and torque arrays (held fixed across advance()).
 class ColumnScene {
 public:
     /// Build the column of spec (packing from the cache when present); uses plan.dem_dt_s.
@@ -58,7 +59,8 @@ public:
     bool submerged() const { return m_submerged; }
     /// How long the column settled under the run's gravity before t = 0 [s] (plan and logs).
     double settleTime() const { return m_settleTime; }
-    /// Index of the gate among the walls (inactive from run.gate_release_tc on, at once by default).
+    /// Index of the gate among the walls (inactive from run.gate_release_tc on, at once by
+    /// default).
     std::size_t gateWall() const { return m_gate; }
 
     /// Fill the grains, contacts and walls of a snapshot (and step, time, domain, slope).

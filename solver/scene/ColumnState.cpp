@@ -9,10 +9,17 @@ namespace {
 
 /// The per-disc arrays that define the state, with their archive names.
 std::vector<std::pair<const char*, std::vector<Real>*>> discArrays(dem::Particles& p) {
-    return {{"dem/x", &p.x},           {"dem/y", &p.y},           {"dem/vx", &p.vx},
-            {"dem/vy", &p.vy},         {"dem/omega", &p.omega},   {"dem/fx", &p.fx},
-            {"dem/fy", &p.fy},         {"dem/torque", &p.torque}, {"dem/ext_fx", &p.ext_fx},
-            {"dem/ext_fy", &p.ext_fy}, {"dem/ext_torque", &p.ext_torque}};
+    return {{"dem/x", &p.x},
+            {"dem/y", &p.y},
+            {"dem/vx", &p.vx},
+            {"dem/vy", &p.vy},
+            {"dem/omega", &p.omega},
+            {"dem/fx", &p.fx},
+            {"dem/fy", &p.fy},
+            {"dem/torque", &p.torque},
+            {"dem/ext_fx", &p.ext_fx},
+            {"dem/ext_fy", &p.ext_fy},
+            {"dem/ext_torque", &p.ext_torque}};
 }
 
 } // namespace
@@ -20,12 +27,14 @@ std::vector<std::pair<const char*, std::vector<Real>*>> discArrays(dem::Particle
 void saveColumnState(const ColumnScene& column, StateArchive& archive) {
     const auto& system = column.system();
     auto& particles = const_cast<dem::Particles&>(system.particles()); // read only below
-    for (const auto& [name, values] : discArrays(particles)) archive.reals[name] = *values;
+    for (const auto& [name, values] : discArrays(particles))
+        archive.reals[name] = *values;
     archive.reals["dem/radius"] = particles.radius;
     archive.reals["dem/time"] = {system.time()};
     archive.integers["dem/steps"] = {system.stepCount()};
     std::vector<std::int64_t> wallActive;
-    for (const auto& wall : system.walls()) wallActive.push_back(wall.active ? 1 : 0);
+    for (const auto& wall : system.walls())
+        wallActive.push_back(wall.active ? 1 : 0);
     archive.integers["dem/wall_active"] = wallActive;
     auto& pairs = archive.integers["dem/history_pairs"];
     auto& springs = archive.reals["dem/history_springs"];
@@ -39,9 +48,11 @@ void restoreColumnState(const StateArchive& archive, ColumnScene& column) {
     auto& system = column.system();
     auto& particles = system.particles();
     if (archive.real("dem/x").size() != particles.size())
-        throw std::runtime_error("the checkpoint holds " + std::to_string(archive.real("dem/x").size()) +
+        throw std::runtime_error("the checkpoint holds " +
+                                 std::to_string(archive.real("dem/x").size()) +
                                  " discs but the case builds " + std::to_string(particles.size()));
-    for (const auto& [name, values] : discArrays(particles)) *values = archive.real(name);
+    for (const auto& [name, values] : discArrays(particles))
+        *values = archive.real(name);
     particles.radius = archive.real("dem/radius");
     system.setClock(archive.real("dem/time").at(0), archive.integer("dem/steps").at(0));
     const auto& active = archive.integer("dem/wall_active");

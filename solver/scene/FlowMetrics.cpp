@@ -1,6 +1,6 @@
 // SI metrics of the flow scenes, each compared with its analytic or published reference.
-#include "solver/scene/FlowScene.h"
 #include "solver/core/Constants.h"
+#include "solver/scene/FlowScene.h"
 
 #include "solver/lattice/D2Q9.h"
 #include "solver/scene/SceneMetrics.h"
@@ -10,10 +10,7 @@
 
 namespace lbdem::solver {
 
-namespace {
-
-
-} // namespace
+namespace {} // namespace
 
 const std::vector<GhiaPoint>& ghiaRe100() {
     // Ghia, Ghia & Shin, J. Comput. Phys. 48 (1982) 387-411, Table I, column Re = 100.
@@ -40,11 +37,20 @@ std::map<std::string, double> FlowScene::metrics() const {
     m["mass_lattice"] = lat.totalMass();
     m["time_s"] = timeS();
     switch (m_kind) {
-    case SceneKind::Poiseuille: metricsPoiseuille(m); break;
-    case SceneKind::TaylorGreen: metricsTaylorGreen(m); break;
-    case SceneKind::Cavity: metricsCavity(m); break;
-    case SceneKind::Cylinder: metricsCylinder(m); break;
-    default: break;
+    case SceneKind::Poiseuille:
+        metricsPoiseuille(m);
+        break;
+    case SceneKind::TaylorGreen:
+        metricsTaylorGreen(m);
+        break;
+    case SceneKind::Cavity:
+        metricsCavity(m);
+        break;
+    case SceneKind::Cylinder:
+        metricsCylinder(m);
+        break;
+    default:
+        break;
     }
     return m;
 }
@@ -94,7 +100,8 @@ void FlowScene::metricsTaylorGreen(std::map<std::string, double>& m) const {
     m["decay_rate_1_s_reference"] = exact; // the NAME_reference form studies look for
     const long long elapsed = stepCount() - m_referenceStep;
     if (m_referenceAmplitude <= 0 || elapsed <= 0) return;
-    const double rate = std::log(m_referenceAmplitude / taylorGreenAmplitude()) / (elapsed * m_scales.dt_s);
+    const double rate =
+        std::log(m_referenceAmplitude / taylorGreenAmplitude()) / (elapsed * m_scales.dt_s);
     m["decay_rate_1_s"] = rate;
     m["decay_rate_error"] = std::abs(rate - exact) / exact;
 }

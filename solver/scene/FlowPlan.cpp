@@ -99,13 +99,15 @@ void planFlow(const CaseSpec& spec, Plan& plan) {
     if (s.tau - 0.5 < 0.01 && spec.fluid.collision != "mrt_les") {
         std::snprintf(text, sizeof text,
                       "tau - 0.5 = %.3g is below 0.01 without LES: the run is likely unstable; "
-                      "use collision = \"mrt_les\"", s.tau - 0.5);
+                      "use collision = \"mrt_les\"",
+                      s.tau - 0.5);
         plan.warnings.push_back(text);
     }
     if (plan.mach > 0.3) {
         std::snprintf(text, sizeof text,
                       "peak lattice Mach number %.3g is above 0.3: lower flow.lattice_velocity or "
-                      "raise flow.nodes", plan.mach);
+                      "raise flow.nodes",
+                      plan.mach);
         plan.warnings.push_back(text);
     }
 }

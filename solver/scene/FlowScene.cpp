@@ -14,7 +14,6 @@ namespace lbdem::solver {
 
 namespace {
 
-
 lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const FlowScales& s) {
     using lattice::SideType;
     lattice::LatticeSetup setup;
@@ -31,7 +30,8 @@ lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const Flow
         break;
     }
     case SceneKind::TaylorGreen:
-        setup.left.type = setup.right.type = setup.bottom.type = setup.top.type = SideType::Periodic;
+        setup.left.type = setup.right.type = setup.bottom.type = setup.top.type =
+            SideType::Periodic;
         break;
     case SceneKind::Cavity:
         setup.top.ux = s.u_peak; // the lid moves to +x; the other walls rest
@@ -57,9 +57,7 @@ lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const Flow
 } // namespace
 
 FlowScene::FlowScene(const CaseSpec& spec, const Plan& plan)
-    : m_spec(spec),
-      m_kind(sceneFromName(spec.scene)),
-      m_scales(flowScales(spec)),
+    : m_spec(spec), m_kind(sceneFromName(spec.scene)), m_scales(flowScales(spec)),
       m_lattice(flowSetup(spec, m_kind, m_scales)),
       m_guard(plan.h_m > 0 ? plan.h_m : m_scales.h_m) {
     const FlowScales& s = m_scales;
@@ -93,7 +91,8 @@ void FlowScene::step() {
 }
 
 void FlowScene::advance(long long n) {
-    for (long long k = 0; k < n; ++k) step();
+    for (long long k = 0; k < n; ++k)
+        step();
 }
 
 void FlowScene::runToEnd() {
@@ -116,7 +115,8 @@ void FlowScene::velocityAt(double x, double y, double& ux, double& uy) const {
     const double tx = fi - i, ty = fj - j;
     ux = uy = 0;
     const double weights[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
-    const long long cells[4] = {lat.index(i, j), lat.index(i + 1, j), lat.index(i, j + 1), lat.index(i + 1, j + 1)};
+    const long long cells[4] = {lat.index(i, j), lat.index(i + 1, j), lat.index(i, j + 1),
+                                lat.index(i + 1, j + 1)};
     for (int k = 0; k < 4; ++k) {
         if (!lat.isFluid(cells[k])) continue; // solid nodes count as resting walls
         double a, b;
@@ -133,7 +133,8 @@ double FlowScene::densityAt(double x, double y) const {
     const int j = std::clamp(static_cast<int>(std::floor(fj)), 0, lat.ny() - 2);
     const double tx = fi - i, ty = fj - j;
     const double weights[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
-    const long long cells[4] = {lat.index(i, j), lat.index(i + 1, j), lat.index(i, j + 1), lat.index(i + 1, j + 1)};
+    const long long cells[4] = {lat.index(i, j), lat.index(i + 1, j), lat.index(i, j + 1),
+                                lat.index(i + 1, j + 1)};
     double rho = 0, weight = 0;
     for (int k = 0; k < 4; ++k) {
         if (!lat.isFluid(cells[k])) continue;

@@ -63,13 +63,15 @@ private:
     FlowScales m_scales;
     lattice::Lattice m_lattice;
     lattice::StabilityGuard m_guard;
-    int m_obstacle = -1;               // cylinder owner id
-    long long m_referenceStep = 0;     // Taylor-Green: amplitude recorded at this step
+    int m_obstacle = -1;           // cylinder owner id
+    long long m_referenceStep = 0; // Taylor-Green: amplitude recorded at this step
     double m_referenceAmplitude = 0;
 };
 
 /// Ghia, Ghia & Shin (1982), Table I, Re = 100: u / U_lid along the vertical centreline.
-struct GhiaPoint { double y, u; };
+struct GhiaPoint {
+    double y, u;
+};
 /// The Re = 100 column of Ghia et al.'s Table I (17 points, y from the bottom wall).
 const std::vector<GhiaPoint>& ghiaRe100();
 

@@ -26,12 +26,17 @@ public:
     }
 
     void addMetrics(std::map<std::string, double>& metrics) const override {
-        for (const auto& [name, value] : m_scene.metrics()) metrics[name] = value;
+        for (const auto& [name, value] : m_scene.metrics())
+            metrics[name] = value;
     }
 
-    void save(StateArchive& archive) const override { saveLatticeState(m_scene.lattice(), archive); }
+    void save(StateArchive& archive) const override {
+        saveLatticeState(m_scene.lattice(), archive);
+    }
 
-    void restore(const StateArchive& archive) override { restoreLatticeState(archive, m_scene.lattice()); }
+    void restore(const StateArchive& archive) override {
+        restoreLatticeState(archive, m_scene.lattice());
+    }
 
 private:
     FlowScene m_scene;

@@ -50,8 +50,11 @@ void fillFluidSnapshot(const lattice::Lattice& lat, const LatticeScales& scales,
             const bool fluid = lat.isFluid(c);
             out.ux[k] = static_cast<float>(ux * velocityScale);
             out.uy[k] = static_cast<float>(uy * velocityScale);
-            out.pressure[k] = fluid ? static_cast<float>((lat.density(c) - 1.0) * lattice::kCs2 * pressureScale) : 0.f;
-            out.solid[k] = solidFraction ? static_cast<float>((*solidFraction)[c]) : (fluid ? 0.f : 1.f);
+            out.pressure[k] =
+                fluid ? static_cast<float>((lat.density(c) - 1.0) * lattice::kCs2 * pressureScale)
+                      : 0.f;
+            out.solid[k] =
+                solidFraction ? static_cast<float>((*solidFraction)[c]) : (fluid ? 0.f : 1.f);
             // Central differences (one-sided at the domain edge), lattice units -> 1/s.
             const int im = std::max(i - 1, i0), ip = std::min(i + 1, i0 + scales.nx - 1);
             const int jm = std::max(j - 1, j0), jp = std::min(j + 1, j0 + scales.ny - 1);
@@ -60,7 +63,8 @@ void fillFluidSnapshot(const lattice::Lattice& lat, const LatticeScales& scales,
             velocity(im, j, uxB, uyB);
             velocity(i, jp, uxC, uyC);
             velocity(i, jm, uxD, uyD);
-            const double dvdx = (uyA - uyB) / std::max(ip - im, 1), dudy = (uxC - uxD) / std::max(jp - jm, 1);
+            const double dvdx = (uyA - uyB) / std::max(ip - im, 1),
+                         dudy = (uxC - uxD) / std::max(jp - jm, 1);
             out.vorticity[k] = static_cast<float>((dvdx - dudy) / scales.dt_s);
         }
 }

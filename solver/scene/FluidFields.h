@@ -1,4 +1,5 @@
-// Conversions shared by every scene with a lattice: case -> collision parameters, lattice -> SI fields.
+// Conversions shared by every scene with a lattice: case -> collision parameters, lattice -> SI
+// fields.
 #pragma once
 
 #include "solver/lattice/Lattice.h"
@@ -14,9 +15,9 @@ lattice::CollisionParams collisionOf(const CaseSpec& spec, double tau);
 
 /// Scales from lattice to SI units of one lattice.
 struct LatticeScales {
-    int nx = 0, ny = 0;  ///< domain nodes (without ghost layers)
-    double h_m = 0;      ///< spacing
-    double dt_s = 0;     ///< time step
+    int nx = 0, ny = 0;      ///< domain nodes (without ghost layers)
+    double h_m = 0;          ///< spacing
+    double dt_s = 0;         ///< time step
     double rho_kg_m3 = 1000; ///< fluid density
 };
 

@@ -30,14 +30,18 @@ void saveLatticeState(const lattice::Lattice& lattice, StateArchive& archive) {
 }
 
 void restoreLatticeState(const StateArchive& archive, lattice::Lattice& lattice) {
-    if (!archive.integers.count("lattice/layout") || archive.integer("lattice/layout").at(0) != kInPlaceLayout)
-        throw std::runtime_error("the checkpoint was written by an older lbdem with another population "
-                                 "layout; run the case again from the start");
-    const long long saved = archive.integers.count("lattice/storage") ? archive.integer("lattice/storage").at(0) : 0;
+    if (!archive.integers.count("lattice/layout") ||
+        archive.integer("lattice/layout").at(0) != kInPlaceLayout)
+        throw std::runtime_error(
+            "the checkpoint was written by an older lbdem with another population "
+            "layout; run the case again from the start");
+    const long long saved =
+        archive.integers.count("lattice/storage") ? archive.integer("lattice/storage").at(0) : 0;
     if (saved != storageCode(lattice.storage())) {
         const char* savedName = saved == 1 ? "float" : "double";
-        throw InputError(std::string("the checkpoint holds fluid populations stored as ") + savedName +
-                         " but the case sets fluid.storage = \"" + lattice::storageName(lattice.storage()) +
+        throw InputError(std::string("the checkpoint holds fluid populations stored as ") +
+                         savedName + " but the case sets fluid.storage = \"" +
+                         lattice::storageName(lattice.storage()) +
                          "\"; resume with fluid.storage = \"" + savedName + "\"");
     }
     const auto& values = archive.real("lattice/f");

@@ -6,7 +6,8 @@
 
 namespace lbdem::solver {
 
-/// Save the stored populations (exactly), their storage and the step count into archive ("lattice/...").
+/// Save the stored populations (exactly), their storage and the step count into archive
+/// ("lattice/...").
 void saveLatticeState(const lattice::Lattice& lattice, StateArchive& archive);
 
 /// Restore a state saved by saveLatticeState into a lattice built from the same case; throws

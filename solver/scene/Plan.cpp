@@ -54,9 +54,11 @@ double outputNodes(const CaseSpec& spec, const Plan& plan) {
 double estimateOutputBytes(const CaseSpec& spec, const Plan& plan) {
     const double interval = spec.run.output_interval_tc * plan.tc_s;
     const double outputs = interval > 0 ? std::floor(plan.end_time_s / interval + 1e-9) + 2 : 2;
-    const double vtkOutputs = spec.output.vtk ? std::ceil(outputs / std::max(1, spec.output.vtk_every)) : 0;
+    const double vtkOutputs =
+        spec.output.vtk ? std::ceil(outputs / std::max(1, spec.output.vtk_every)) : 0;
     const double grains = static_cast<double>(plan.grains);
-    const double vtkBytes = outputNodes(spec, plan) * kVtiBytesPerNode + grains * (kParticleBytes + kContactBytes);
+    const double vtkBytes =
+        outputNodes(spec, plan) * kVtiBytesPerNode + grains * (kParticleBytes + kContactBytes);
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
     const double checkpoint = nodes * kCheckpointBytesPerNode + grains * kCheckpointBytesPerGrain;
     return outputs * (kRowBytes + kProfileBytes) + vtkOutputs * vtkBytes + checkpoint;
@@ -68,7 +70,9 @@ std::string format(const char* pattern, double a, double b = 0) {
     return buffer;
 }
 
-double discMass(double diameter, double density) { return density * kPi * diameter * diameter / 4; }
+double discMass(double diameter, double density) {
+    return density * kPi * diameter * diameter / 4;
+}
 
 void planGrains(const CaseSpec& spec, Plan& plan) {
     const auto& g = spec.grains;
@@ -80,14 +84,17 @@ void planGrains(const CaseSpec& spec, Plan& plan) {
     // omega^2 = 6 k / m, i.e. a pair's with three times the stiffness. (The default case ran
     // stably at 0.46 of the pair's limit and blew up within 8 steps at 0.91 of it; this limit is
     // 0.58 of it.)
-    plan.dem_dt_stable_s = stableDemStep(kPackedNeighbours / 2 * g.normal_stiffness_n_m, lightest / 2, g.restitution);
+    plan.dem_dt_stable_s =
+        stableDemStep(kPackedNeighbours / 2 * g.normal_stiffness_n_m, lightest / 2, g.restitution);
     // Never above the stability limit (a large dt_safety with strong damping would be).
-    plan.dem_dt_safe_s = std::min(g.dt_safety * contactDuration(g.normal_stiffness_n_m, lightest / 2, g.restitution),
-                                  plan.dem_dt_stable_s);
+    plan.dem_dt_safe_s =
+        std::min(g.dt_safety * contactDuration(g.normal_stiffness_n_m, lightest / 2, g.restitution),
+                 plan.dem_dt_stable_s);
     plan.dem_dt_s = plan.dem_dt_safe_s;
     if (plan.column.width_m > spec.domain.width_m || plan.column.height_m > spec.domain.height_m)
-        plan.warnings.push_back(format("the column (%.4g m wide, %.4g m high) does not fit the domain",
-                                       plan.column.width_m, plan.column.height_m));
+        plan.warnings.push_back(
+            format("the column (%.4g m wide, %.4g m high) does not fit the domain",
+                   plan.column.width_m, plan.column.height_m));
 }
 
 /// The DEM step of a coupled run is dt / substeps: refuse one beyond the integrator's stability
@@ -97,18 +104,20 @@ void checkDemStep(const CaseSpec& spec, Plan& plan) {
     const int needed = static_cast<int>(std::floor(plan.dt_s / plan.dem_dt_safe_s)) + 1;
     char text[400];
     if (plan.dem_dt_s > plan.dem_dt_stable_s) {
-        std::snprintf(text, sizeof text,
-                      "%d sub-steps per fluid step of %.3g s give a DEM step of %.3g s, above the stability "
-                      "limit %.3g s of the DEM integrator (contact stiffness, lightest grain); use at least "
-                      "%d, or 0 to choose automatically",
-                      spec.coupling.substeps, plan.dt_s, plan.dem_dt_s, plan.dem_dt_stable_s, needed);
+        std::snprintf(
+            text, sizeof text,
+            "%d sub-steps per fluid step of %.3g s give a DEM step of %.3g s, above the stability "
+            "limit %.3g s of the DEM integrator (contact stiffness, lightest grain); use at least "
+            "%d, or 0 to choose automatically",
+            spec.coupling.substeps, plan.dt_s, plan.dem_dt_s, plan.dem_dt_stable_s, needed);
         throw InputError("", 0, "coupling.substeps", text);
     }
     if (plan.dem_dt_s > plan.dem_dt_safe_s * (1 + 1e-12)) {
-        std::snprintf(text, sizeof text,
-                      "coupling.substeps = %d gives a DEM step of %.3g s, above grains.dt_safety times the "
-                      "contact duration (%.3g s); %d sub-steps keep within it",
-                      spec.coupling.substeps, plan.dem_dt_s, plan.dem_dt_safe_s, needed);
+        std::snprintf(
+            text, sizeof text,
+            "coupling.substeps = %d gives a DEM step of %.3g s, above grains.dt_safety times the "
+            "contact duration (%.3g s); %d sub-steps keep within it",
+            spec.coupling.substeps, plan.dem_dt_s, plan.dem_dt_safe_s, needed);
         plan.warnings.push_back(text);
     }
 }
@@ -134,22 +143,29 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
     plan.mach = plan.u_expected_m_s * plan.dt_s / plan.h_m / kSoundSpeed;
     const double needed = std::floor(plan.dt_s / plan.dem_dt_safe_s) + 1;
     if (plan.has_grains && spec.coupling.substeps == 0 && !(needed <= kMaxSubsteps))
-        throw InputError("", 0, "coupling.substeps",
-                         format("the fluid step of %.3g s would need %.3g DEM sub-steps (more than 10000); lower "
-                                "fluid.tau or raise fluid.resolution", plan.dt_s, needed));
-    plan.substeps = spec.coupling.substeps > 0 ? spec.coupling.substeps : static_cast<int>(std::min(needed, kMaxSubsteps));
+        throw InputError(
+            "", 0, "coupling.substeps",
+            format(
+                "the fluid step of %.3g s would need %.3g DEM sub-steps (more than 10000); lower "
+                "fluid.tau or raise fluid.resolution",
+                plan.dt_s, needed));
+    plan.substeps = spec.coupling.substeps > 0 ? spec.coupling.substeps
+                                               : static_cast<int>(std::min(needed, kMaxSubsteps));
     if (plan.has_grains) checkDemStep(spec, plan);
 
     if (f.tau != 0 && f.tau <= 0.5)
-        plan.warnings.push_back(format("tau = %.6g must exceed 0.5; set fluid.tau above 0.5 or to 0", f.tau));
+        plan.warnings.push_back(
+            format("tau = %.6g must exceed 0.5; set fluid.tau above 0.5 or to 0", f.tau));
     if (plan.tau - 0.5 < 0.01 && f.collision != "mrt_les")
-        plan.warnings.push_back(format("tau - 0.5 = %.3g is below 0.01 without LES: the run is likely "
-                                       "unstable; use collision = \"mrt_les\"",
-                                       plan.tau - 0.5));
+        plan.warnings.push_back(
+            format("tau - 0.5 = %.3g is below 0.01 without LES: the run is likely "
+                   "unstable; use collision = \"mrt_les\"",
+                   plan.tau - 0.5));
     if (plan.mach > 0.3)
-        plan.warnings.push_back(format("expected Mach number %.3g is above 0.3: compressibility errors "
-                                       "and instability; lower tau or raise resolution",
-                                       plan.mach));
+        plan.warnings.push_back(
+            format("expected Mach number %.3g is above 0.3: compressibility errors "
+                   "and instability; lower tau or raise resolution",
+                   plan.mach));
     const double nodesAcross = spec.coupling.hydro_radius_ratio * f.resolution;
     if (plan.has_grains && nodesAcross < 5)
         plan.warnings.push_back(format("only %.3g lattice nodes across the smallest hydrodynamic "
@@ -161,7 +177,8 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
 /// domain or the layer: said in a note, with a warning when a submerged front may run further.
 void planDomain(const CaseSpec& spec, Plan& plan) {
     const auto& d = spec.domain;
-    if (plan.has_fluid && (d.right == "pressure" || d.top == "pressure") && d.absorbing_layer_strength > 0)
+    if (plan.has_fluid && (d.right == "pressure" || d.top == "pressure") &&
+        d.absorbing_layer_strength > 0)
         plan.absorbing_layer_nodes = d.absorbing_layer_nodes;
     if (!plan.has_grains || plan.column.width_m <= 0) return;
     const double layer = d.right == "pressure" ? plan.absorbing_layer_nodes * plan.h_m : 0.0;
@@ -169,16 +186,18 @@ void planDomain(const CaseSpec& spec, Plan& plan) {
     plan.runout_room = (end - plan.column.width_m) / plan.column.width_m;
     const char* meets = layer > 0 ? "the absorbing layer" : "the end of the domain";
     char text[400];
-    const int used = std::snprintf(text, sizeof text,
-                             "the domain is %.3g m long (domain.width_m) = %.3g column widths: a front meets %s "
-                             "at Delta L = %.2f",
-                             d.width_m, widths, meets, plan.runout_room);
+    const int used = std::snprintf(
+        text, sizeof text,
+        "the domain is %.3g m long (domain.width_m) = %.3g column widths: a front meets %s "
+        "at Delta L = %.2f",
+        d.width_m, widths, meets, plan.runout_room);
     if (plan.has_fluid && used > 0 && used < static_cast<int>(sizeof text)) {
         const bool room = plan.runout_room >= kLongestExpectedRunout;
-        std::snprintf(text + used, sizeof text - used,
-                      ", %s the longest submerged runout the paper's first author reports (Delta L ~ %.1f)%s",
-                      room ? "beyond" : "short of", kLongestExpectedRunout,
-                      room ? "" : "; a front that runs further is a lower bound (0.4 m leaves room)");
+        std::snprintf(
+            text + used, sizeof text - used,
+            ", %s the longest submerged runout the paper's first author reports (Delta L ~ %.1f)%s",
+            room ? "beyond" : "short of", kLongestExpectedRunout,
+            room ? "" : "; a front that runs further is a lower bound (0.4 m leaves room)");
     }
     plan.notes.push_back(text);
 }
@@ -201,9 +220,9 @@ ColumnGeometry columnGeometry(const GrainSpec& grains) {
     ColumnGeometry column;
     const double dMin = grains.d_min_m, dMax = grains.d_min_m * grains.size_ratio;
     // E[d^2] for d uniform in [dMin, dMax].
-    const double meanSquare = grains.size_ratio > 1.0
-                                  ? (dMax * dMax * dMax - dMin * dMin * dMin) / (3.0 * (dMax - dMin))
-                                  : dMin * dMin;
+    const double meanSquare =
+        grains.size_ratio > 1.0 ? (dMax * dMax * dMax - dMin * dMin * dMin) / (3.0 * (dMax - dMin))
+                                : dMin * dMin;
     column.mean_disc_area_m2 = kPi * meanSquare / 4.0;
     column.grain_area_m2 = grains.count * column.mean_disc_area_m2;
     const double area = column.grain_area_m2 / grains.packing;
@@ -237,10 +256,10 @@ Plan makePlan(const CaseSpec& spec) {
     // fraction per node, the coupling's owner map, ~256 B per grain; while a checkpoint is
     // written, a double copy of the state; while an output is written, the snapshot's and the
     // VTK image's fluid fields.
-    plan.memory_bytes = static_cast<std::size_t>(nodes * (kQ * bytesPerValue + 1 + 4 + 8 + 4) +
-                                                 nodes * kCheckpointBytesPerNode +
-                                                 outputNodes(spec, plan) * (kSnapshotBytesPerNode + kVtiBytesPerNode) +
-                                                 static_cast<double>(plan.grains) * 256);
+    plan.memory_bytes = static_cast<std::size_t>(
+        nodes * (kQ * bytesPerValue + 1 + 4 + 8 + 4) + nodes * kCheckpointBytesPerNode +
+        outputNodes(spec, plan) * (kSnapshotBytesPerNode + kVtiBytesPerNode) +
+        static_cast<double>(plan.grains) * 256);
     plan.output_bytes = static_cast<std::size_t>(estimateOutputBytes(spec, plan));
     const double demSteps = static_cast<double>(plan.steps) * plan.substeps;
     plan.estimated_run_s = static_cast<double>(plan.steps) * nodes / kAssumedLatticeUpdatesPerS +

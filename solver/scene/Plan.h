@@ -22,27 +22,27 @@ ColumnGeometry columnGeometry(const GrainSpec& grains);
 
 /// Lattice units and numbers that follow from a CaseSpec (docs/design.md §4).
 struct Plan {
-    bool has_fluid = false;   ///< false for dry scenes: no lattice is allocated
-    bool has_grains = false;  ///< false for pure fluid scenes
-    int nx = 0, ny = 0;       ///< lattice nodes
-    double h_m = 0;           ///< lattice spacing
-    double dt_s = 0;          ///< fluid time step (or DEM step for dry scenes)
-    double tau = 0;           ///< BGK relaxation time
-    double nu_lattice = 0;    ///< lattice viscosity (tau - 1/2) / 3
-    double u_expected_m_s = 0; ///< the velocity scale the Mach number refers to
-    double mach = 0;          ///< u_expected dt / h / c_s
-    double dem_dt_s = 0;      ///< DEM time step the run uses (dt_s / substeps when coupled)
-    double dem_dt_safe_s = 0; ///< grains.dt_safety times the shortest contact duration
+    bool has_fluid = false;     ///< false for dry scenes: no lattice is allocated
+    bool has_grains = false;    ///< false for pure fluid scenes
+    int nx = 0, ny = 0;         ///< lattice nodes
+    double h_m = 0;             ///< lattice spacing
+    double dt_s = 0;            ///< fluid time step (or DEM step for dry scenes)
+    double tau = 0;             ///< BGK relaxation time
+    double nu_lattice = 0;      ///< lattice viscosity (tau - 1/2) / 3
+    double u_expected_m_s = 0;  ///< the velocity scale the Mach number refers to
+    double mach = 0;            ///< u_expected dt / h / c_s
+    double dem_dt_s = 0;        ///< DEM time step the run uses (dt_s / substeps when coupled)
+    double dem_dt_safe_s = 0;   ///< grains.dt_safety times the shortest contact duration
     double dem_dt_stable_s = 0; ///< stability limit of the explicit DEM integrator (packed grains)
-    int substeps = 1;         ///< DEM sub-steps per fluid step
-    long long grains = 0;     ///< number of discs
-    double tc_s = 0;          ///< tau_c = sqrt(H_i / g); the time unit of the run
-    double end_time_s = 0;    ///< physical end time
-    long long steps = 0;      ///< fluid (or DEM) steps to the end time
-    std::size_t memory_bytes = 0; ///< estimated solver memory
-    std::size_t output_bytes = 0; ///< estimated size of everything the run writes (upper bound)
-    double estimated_run_s = 0;   ///< rough wall time on this class of machine
-    ColumnGeometry column;        ///< the initial column (zero when there are no grains)
+    int substeps = 1;           ///< DEM sub-steps per fluid step
+    long long grains = 0;       ///< number of discs
+    double tc_s = 0;            ///< tau_c = sqrt(H_i / g); the time unit of the run
+    double end_time_s = 0;      ///< physical end time
+    long long steps = 0;        ///< fluid (or DEM) steps to the end time
+    std::size_t memory_bytes = 0;  ///< estimated solver memory
+    std::size_t output_bytes = 0;  ///< estimated size of everything the run writes (upper bound)
+    double estimated_run_s = 0;    ///< rough wall time on this class of machine
+    ColumnGeometry column;         ///< the initial column (zero when there are no grains)
     int absorbing_layer_nodes = 0; ///< sponge thickness inside the pressure sides (0: none)
     /// Normalised runout Delta L = (L_f - L_i) / L_i at which a front meets the end of the domain
     /// or its absorbing layer (column scenes; 0 otherwise).

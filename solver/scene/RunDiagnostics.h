@@ -29,7 +29,8 @@ public:
     void recordOutput(std::map<std::string, double>& metrics, double timeOverTc);
     /// Set the work of the running process so far (wall seconds, steps, seconds per stage); the
     /// totals are these plus what earlier processes of the run did.
-    void setProcessWork(double wallSeconds, long long steps, const std::vector<double>& stageSeconds);
+    void setProcessWork(double wallSeconds, long long steps,
+                        const std::vector<double>& stageSeconds);
 
     /// Largest E_k / E_p0 of all outputs (0 when none reported it).
     double kePeak() const { return m_kePeak; }

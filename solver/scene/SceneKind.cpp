@@ -18,6 +18,8 @@ SceneKind sceneFromName(std::string_view name) {
     throw std::invalid_argument("unknown scene '" + std::string(name) + "'");
 }
 
-const std::string& sceneName(SceneKind kind) { return sceneNames().at(static_cast<std::size_t>(kind)); }
+const std::string& sceneName(SceneKind kind) {
+    return sceneNames().at(static_cast<std::size_t>(kind));
+}
 
 } // namespace lbdem::solver

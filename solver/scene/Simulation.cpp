@@ -24,9 +24,13 @@ void Simulation::step() {
     ++m_state->step;
 }
 
-long long Simulation::stepIndex() const { return m_state->step; }
+long long Simulation::stepIndex() const {
+    return m_state->step;
+}
 
-double Simulation::time() const { return m_state->runner->time(); }
+double Simulation::time() const {
+    return m_state->runner->time();
+}
 
 bool Simulation::finished() const {
     return time() >= m_plan.end_time_s - 0.5 * m_plan.dt_s;

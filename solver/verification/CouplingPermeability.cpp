@@ -1,6 +1,7 @@
-// Permeability of a fixed random disc packing against the hydrodynamic radius (the paper's Figure 3).
-#include "solver/verification/CouplingVerification.h"
+// Permeability of a fixed random disc packing against the hydrodynamic radius (the paper's Figure
+// 3).
 #include "solver/core/Constants.h"
+#include "solver/verification/CouplingVerification.h"
 
 #include "solver/core/InputError.h"
 #include "solver/dem/DemSystem.h"
@@ -45,9 +46,15 @@ std::vector<Disc> randomPacking(Real dMin, Real side, std::uint64_t seed) {
                 Real dx = x - o.x, dy = y - o.y;
                 dx -= side * std::round(dx / side);
                 dy -= side * std::round(dy / side);
-                if (dx * dx + dy * dy < (r + o.r) * (r + o.r)) { free = false; break; }
+                if (dx * dx + dy * dy < (r + o.r) * (r + o.r)) {
+                    free = false;
+                    break;
+                }
             }
-            if (free) { discs.push_back({x, y, r}); break; }
+            if (free) {
+                discs.push_back({x, y, r});
+                break;
+            }
         }
     }
     return discs;
@@ -67,12 +74,13 @@ lattice::LatticeSetup permeabilityLattice(int side, Real tau, Real g) {
 
 } // namespace
 
-std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method, int nodes, int box,
-                                                 const std::vector<double>& ratios) {
+std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method, int nodes,
+                                                 int box, const std::vector<double>& ratios) {
     const int side = nodes * box;
     const std::vector<Disc> discs = randomPacking(nodes, side, 20261123);
     Real dMean = 0;
-    for (const Disc& d : discs) dMean += 2 * d.r;
+    for (const Disc& d : discs)
+        dMean += 2 * d.r;
     dMean /= static_cast<Real>(discs.size());
     const Real tau = 1.0, nu = (tau - 0.5) / 3, g = 1e-6;
     std::vector<PermeabilityPoint> points;
@@ -80,7 +88,8 @@ std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method
         const auto start = Clock::now();
         lattice::Lattice lattice(permeabilityLattice(side, tau, g));
         dem::DemSystem grains;
-        for (const Disc& d : discs) grains.addDisc(d.x, d.y, d.r);
+        for (const Disc& d : discs)
+            grains.addDisc(d.x, d.y, d.r);
         coupling::CouplingParams params;
         params.method = method;
         params.hydro_radius_ratio = ratio;
@@ -111,7 +120,8 @@ std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method
         PermeabilityPoint p;
         p.ratio = ratio;
         Real solid = 0;
-        for (const Disc& d : discs) solid += kPi * ratio * ratio * d.r * d.r;
+        for (const Disc& d : discs)
+            solid += kPi * ratio * ratio * d.r * d.r;
         p.porosity = 1 - solid / (static_cast<Real>(side) * side);
         // Darcy: mu U = rho nu U = K F for the body force density F = g (Guo forcing).
         p.k_over_d2 = nu * u / g / (dMean * dMean);

@@ -1,7 +1,7 @@
 // Equilibrium checks of the coupling: bodies at rest in still fluid feel nothing, a column at rest
 // puts its buoyant weight on the floor.
-#include "solver/verification/CouplingVerification.h"
 #include "solver/core/Constants.h"
+#include "solver/verification/CouplingVerification.h"
 
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
@@ -22,7 +22,8 @@ using Clock = std::chrono::steady_clock;
 constexpr CouplingMethod kMethods[] = {CouplingMethod::BounceBack, CouplingMethod::Psm};
 
 // The paper's grains and water (Kumar et al.): d = 1.2 mm at d/h = 6, tau = 0.506.
-constexpr double kDiameter = 1.2e-3, kNodesPerDiameter = 6, kRhoS = 2650, kRhoF = 1000, kGravity = 9.81;
+constexpr double kDiameter = 1.2e-3, kNodesPerDiameter = 6, kRhoS = 2650, kRhoF = 1000,
+                 kGravity = 9.81;
 constexpr double kTau = 0.506, kNu = 1e-6, kHydroRatio = 0.9;
 /// Steps of still fluid after mapping: enough for any spurious pressure to show in the loads.
 constexpr int kRestSteps = 20;
@@ -34,7 +35,8 @@ constexpr long long kSampleSteps = 8;
 /// Fixed discs (SI centres, one radius) in still water over a no-slip floor at y = 0, with
 /// closed walls elsewhere; returns the largest net hydrodynamic force on any disc over
 /// kRestSteps steps, divided by the disc's buoyant weight (rho_s - rho_f) g pi R^2.
-double restForceRatio(CouplingMethod method, const std::vector<std::pair<double, double>>& centres, double radius) {
+double restForceRatio(CouplingMethod method, const std::vector<std::pair<double, double>>& centres,
+                      double radius) {
     const double h = kDiameter / kNodesPerDiameter, dt = (kTau - 0.5) / 3 * h * h / kNu;
     lattice::LatticeSetup setup;
     setup.nx = setup.ny = static_cast<int>(8 * kNodesPerDiameter);
@@ -50,7 +52,8 @@ double restForceRatio(CouplingMethod method, const std::vector<std::pair<double,
     dem::Material material;
     material.density = kRhoS;
     dem::DemSystem grains(material, 0.0);
-    for (const auto& [x, y] : centres) grains.addDisc(x, y, radius);
+    for (const auto& [x, y] : centres)
+        grains.addDisc(x, y, radius);
     coupling::Coupling link(lattice, grains, params);
     const double buoyantWeight = (kRhoS - kRhoF) * kGravity * kPi * radius * radius;
     double worst = 0;
@@ -67,7 +70,8 @@ double restForceRatio(CouplingMethod method, const std::vector<std::pair<double,
     return worst;
 }
 
-VerificationResult restRecord(const std::string& quantity, double ratio, double wall, CouplingMethod method) {
+VerificationResult restRecord(const std::string& quantity, double ratio, double wall,
+                              CouplingMethod method) {
     VerificationResult r;
     r.name = "near-contact";
     r.quantity = quantity;
@@ -78,15 +82,17 @@ VerificationResult restRecord(const std::string& quantity, double ratio, double 
     r.passed = std::isfinite(ratio) && ratio <= kRestTolerance;
     r.wall_s = wall;
     r.method = coupling::couplingMethodName(method);
-    r.source = "Equilibrium: a body at rest in fluid at rest feels no net force (excess pressure zero "
-               "everywhere); an unwetted part of a surface must contribute nothing";
+    r.source =
+        "Equilibrium: a body at rest in fluid at rest feels no net force (excess pressure zero "
+        "everywhere); an unwetted part of a surface must contribute nothing";
     return r;
 }
 
 std::vector<VerificationResult> nearContact(const VerificationOptions& options) {
     // Gaps between the hydrodynamic surfaces (r_h = 0.9 R), in lattice nodes: at 0 the two
     // discs the fluid sees touch, and the surfaces facing each other have no fluid node between.
-    const double h = kDiameter / kNodesPerDiameter, radius = kDiameter / 2, hydro = kHydroRatio * radius;
+    const double h = kDiameter / kNodesPerDiameter, radius = kDiameter / 2,
+                 hydro = kHydroRatio * radius;
     const double mid = 4 * kDiameter;
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods) {
@@ -94,14 +100,17 @@ std::vector<VerificationResult> nearContact(const VerificationOptions& options) 
             const auto start = Clock::now();
             // Off the lattice's symmetry lines so that the links are not a special case.
             const double x0 = mid - hydro - gap * h / 2 + 0.137 * h, y0 = mid + 0.291 * h;
-            const double ratio = restForceRatio(m, {{x0, y0}, {x0 + 2 * hydro + gap * h, y0}}, radius);
-            out.push_back(restRecord("max |F| / buoyant weight, two discs, gap " + formatQuantity("%g", gap) + " nodes",
+            const double ratio =
+                restForceRatio(m, {{x0, y0}, {x0 + 2 * hydro + gap * h, y0}}, radius);
+            out.push_back(restRecord("max |F| / buoyant weight, two discs, gap " +
+                                         formatQuantity("%g", gap) + " nodes",
                                      ratio, secondsSince(start), m));
         }
         for (double gap : {0.0, 0.25, 0.5, 1.0}) {
             const auto start = Clock::now();
             const double ratio = restForceRatio(m, {{mid + 0.137 * h, hydro + gap * h}}, radius);
-            out.push_back(restRecord("max |F| / buoyant weight, disc " + formatQuantity("%g", gap) + " nodes above the floor",
+            out.push_back(restRecord("max |F| / buoyant weight, disc " + formatQuantity("%g", gap) +
+                                         " nodes above the floor",
                                      ratio, secondsSince(start), m));
         }
     }
@@ -134,7 +143,9 @@ ColumnRest columnAtRest(CouplingMethod method, double resolution, int threads) {
     int samples = 0;
     while (!simulation.finished()) {
         simulation.step();
-        if (simulation.timeOverTc() < 0.5 * spec.run.end_tc || simulation.stepIndex() % kSampleSteps != 0) continue;
+        if (simulation.timeOverTc() < 0.5 * spec.run.end_tc ||
+            simulation.stepIndex() % kSampleSteps != 0)
+            continue;
         const auto metrics = simulation.metrics();
         floorSum += metrics.at("floor_normal_force_n_m");
         supportSum += metrics.at("wall_support_normal_n_m");
@@ -143,9 +154,11 @@ ColumnRest columnAtRest(CouplingMethod method, double resolution, int threads) {
     const auto snapshot = simulation.snapshot();
     double weight = 0;
     const double theta = spec.domain.slope_deg * kPi / 180;
-    const double reduced = spec.domain.gravity_m_s2 * (1 - spec.fluid.density_kg_m3 / spec.grains.density_kg_m3);
+    const double reduced =
+        spec.domain.gravity_m_s2 * (1 - spec.fluid.density_kg_m3 / spec.grains.density_kg_m3);
     for (float r : snapshot->grains.radius)
-        weight += spec.grains.density_kg_m3 * kPi * double(r) * double(r) * reduced * std::cos(theta);
+        weight +=
+            spec.grains.density_kg_m3 * kPi * double(r) * double(r) * reduced * std::cos(theta);
     ColumnRest rest;
     rest.floor_ratio = floorSum / std::max(samples, 1) / weight;
     rest.support_ratio = supportSum / std::max(samples, 1) / weight;
@@ -155,8 +168,9 @@ ColumnRest columnAtRest(CouplingMethod method, double resolution, int threads) {
 }
 
 std::vector<VerificationResult> columnRest(const VerificationOptions& options) {
-    const char* source = "Equilibrium: a column at rest in still water puts its buoyant weight on the floor "
-                         "(Archimedes; the lattice pressure is the excess pressure, zero at rest)";
+    const char* source =
+        "Equilibrium: a column at rest in still water puts its buoyant weight on the floor "
+        "(Archimedes; the lattice pressure is the excess pressure, zero at rest)";
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods)
         for (double resolution : {6.0, 10.0, 12.0}) {
@@ -165,17 +179,19 @@ std::vector<VerificationResult> columnRest(const VerificationOptions& options) {
             // expands a little as buoyancy unloads it, and the frictional back wall and gate hold
             // it down (about +20 %, the same as dry). The balance that shows whether the fluid
             // pushes or pulls is the walls' whole support against the buoyant weight.
-            VerificationResult floor = compareRelative(
-                "column-at-rest",
-                formatQuantity("walls' support normal to the floor / buoyant weight (d_min/h = %g; floor alone %.4f)",
-                       resolution, rest.floor_ratio),
-                rest.support_ratio, 1.0, 0.01, source);
+            VerificationResult floor =
+                compareRelative("column-at-rest",
+                                formatQuantity("walls' support normal to the floor / buoyant "
+                                               "weight (d_min/h = %g; floor alone %.4f)",
+                                               resolution, rest.floor_ratio),
+                                rest.support_ratio, 1.0, 0.01, source);
             floor.method = coupling::couplingMethodName(m);
             floor.wall_s = rest.wall_s;
             out.push_back(floor);
             VerificationResult speed;
             speed.name = "column-at-rest";
-            speed.quantity = formatQuantity("largest grain speed after 0.5 tau_c [m/s] (d_min/h = %g)", resolution);
+            speed.quantity = formatQuantity(
+                "largest grain speed after 0.5 tau_c [m/s] (d_min/h = %g)", resolution);
             speed.value = speed.error = rest.max_speed;
             speed.tolerance = 1e-4;
             speed.passed = std::isfinite(rest.max_speed) && rest.max_speed <= speed.tolerance;
@@ -190,9 +206,11 @@ std::vector<VerificationResult> columnRest(const VerificationOptions& options) {
 
 std::vector<VerificationCase> couplingRestCases() {
     return {
-        {"near-contact", "discs at rest in still water at gaps of 0-1.5 nodes, and above the floor, feel no force",
+        {"near-contact",
+         "discs at rest in still water at gaps of 0-1.5 nodes, and above the floor, feel no force",
          nearContact},
-        {"column-at-rest", "the dense paper column held in still water puts its buoyant weight on the floor",
+        {"column-at-rest",
+         "the dense paper column held in still water puts its buoyant weight on the floor",
          columnRest, true},
     };
 }

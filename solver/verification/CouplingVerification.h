@@ -1,4 +1,5 @@
-// Verification of the fluid-grain coupling: settling disc, Gebart array, disc in shear, permeability.
+// Verification of the fluid-grain coupling: settling disc, Gebart array, disc in shear,
+// permeability.
 #pragma once
 
 #include "solver/core/Real.h"
@@ -48,8 +49,8 @@ struct PermeabilityPoint {
 
 /// Seeded random non-overlapping polydisperse packing (d in [d_min, 1.8 d_min], d_min = `nodes`
 /// lattice nodes) in a periodic square box of `box` d_min; body-force-driven flow for each ratio.
-std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method, int nodes, int box,
-                                                 const std::vector<double>& ratios);
+std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method, int nodes,
+                                                 int box, const std::vector<double>& ratios);
 
 /// Write a sweep as CSV: method, ratio, porosity, k_over_d2, ck_spheres, ck_cylinders, wall_s.
 void writePermeabilityCsv(const std::string& path, const std::vector<std::string>& methods,

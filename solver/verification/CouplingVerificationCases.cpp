@@ -1,6 +1,7 @@
-// The coupling verification cases: each scene run with both methods, error and wall time side by side.
-#include "solver/verification/CouplingVerification.h"
+// The coupling verification cases: each scene run with both methods, error and wall time side by
+// side.
 #include "solver/core/Constants.h"
+#include "solver/verification/CouplingVerification.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +15,9 @@ namespace {
 using coupling::CouplingMethod;
 constexpr CouplingMethod kMethods[] = {CouplingMethod::BounceBack, CouplingMethod::Psm};
 
-VerificationResult relative(const std::string& name, const std::string& quantity, const CouplingRun& run,
-                            double reference, double tolerance, const std::string& source,
-                            CouplingMethod method) {
+VerificationResult relative(const std::string& name, const std::string& quantity,
+                            const CouplingRun& run, double reference, double tolerance,
+                            const std::string& source, CouplingMethod method) {
     VerificationResult r = compareRelative(name, quantity, run.value, reference, tolerance, source);
     r.passed = r.passed && run.finite;
     r.wall_s = run.wall_s;
@@ -31,9 +32,10 @@ std::vector<VerificationResult> settling(const VerificationOptions& options) {
     const double tolerance = options.long_run ? 0.05 : 0.10;
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods)
-        out.push_back(relative("settling-disc", formatQuantity("terminal Re (%g nodes per d)", nodes),
-                               settlingDisc(m, nodes), 259.5, tolerance,
-                               "Wachs (2009), Particuology 7, 2D disc in a 4 d channel: Re = 259.5", m));
+        out.push_back(
+            relative("settling-disc", formatQuantity("terminal Re (%g nodes per d)", nodes),
+                     settlingDisc(m, nodes), 259.5, tolerance,
+                     "Wachs (2009), Particuology 7, 2D disc in a 4 d channel: Re = 259.5", m));
     return out;
 }
 
@@ -46,9 +48,10 @@ std::vector<VerificationResult> gebart(const VerificationOptions& options) {
     const int cell = options.long_run ? 80 : 40;
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods)
-        out.push_back(relative("gebart-square", formatQuantity("K/R^2 at solid fraction 0.5 (%g-node cell)", cell),
-                               gebartSquare(m, cell, 0.5), reference, 0.10,
-                               "Gebart (1992), J. Compos. Mater. 26, square array, K/R^2 = 0.0129", m));
+        out.push_back(relative(
+            "gebart-square", formatQuantity("K/R^2 at solid fraction 0.5 (%g-node cell)", cell),
+            gebartSquare(m, cell, 0.5), reference, 0.10,
+            "Gebart (1992), J. Compos. Mater. 26, square array, K/R^2 = 0.0129", m));
     return out;
 }
 
@@ -58,10 +61,12 @@ std::vector<VerificationResult> shear(const VerificationOptions& options) {
     const int nodes = options.long_run ? 16 : 8;
     std::vector<VerificationResult> out;
     for (CouplingMethod m : kMethods)
-        out.push_back(relative("disc-shear",
-                               formatQuantity("omega / (-gamma/2), Re_p = 0.01, %g nodes per d, walls 16 d apart", nodes),
-                               discShear(m, nodes, 16), 1.0, 0.02,
-                               "Stokes flow: a torque-free disc rotates at half the vorticity", m));
+        out.push_back(relative(
+            "disc-shear",
+            formatQuantity("omega / (-gamma/2), Re_p = 0.01, %g nodes per d, walls 16 d apart",
+                           nodes),
+            discShear(m, nodes, 16), 1.0, 0.02,
+            "Stokes flow: a torque-free disc rotates at half the vorticity", m));
     return out;
 }
 
@@ -81,11 +86,13 @@ std::vector<VerificationResult> permeability(const VerificationOptions& options)
             wall += points[k].wall_s;
             finite = finite && std::isfinite(points[k].k_over_d2) && points[k].k_over_d2 > 0;
             if (k > 0) worst = std::max(worst, points[k].k_over_d2 / points[k - 1].k_over_d2);
-            ck += formatQuantity(" %.2f:%.2f", points[k].ratio, points[k].k_over_d2 / points[k].ck_cylinders);
+            ck += formatQuantity(" %.2f:%.2f", points[k].ratio,
+                                 points[k].k_over_d2 / points[k].ck_cylinders);
         }
         VerificationResult r;
         r.name = "permeability";
-        r.quantity = "max K(r_k+1)/K(r_k) over r_h/R = 0.7..0.95 (< 1: monotonic); K/K_CK,cyl at r:" + ck;
+        r.quantity =
+            "max K(r_k+1)/K(r_k) over r_h/R = 0.7..0.95 (< 1: monotonic); K/K_CK,cyl at r:" + ck;
         r.value = worst;
         r.reference = 1;
         r.error = worst;
@@ -107,10 +114,15 @@ std::vector<VerificationResult> permeability(const VerificationOptions& options)
 
 std::vector<VerificationCase> couplingVerificationCases() {
     return {
-        {"settling-disc", "disc settling in a 4 d channel at Re 259.5 (Wachs 2009), both coupling methods", settling},
-        {"gebart-square", "permeability of a square cylinder array at solid fraction 0.5 (Gebart 1992)", gebart},
+        {"settling-disc",
+         "disc settling in a 4 d channel at Re 259.5 (Wachs 2009), both coupling methods",
+         settling},
+        {"gebart-square",
+         "permeability of a square cylinder array at solid fraction 0.5 (Gebart 1992)", gebart},
         {"disc-shear", "free disc in simple shear rotates at half the vorticity", shear},
-        {"permeability", "random disc packing: K falls with the hydrodynamic radius; vs Carman-Kozeny", permeability},
+        {"permeability",
+         "random disc packing: K falls with the hydrodynamic radius; vs Carman-Kozeny",
+         permeability},
     };
 }
 

@@ -1,6 +1,6 @@
 // The coupled scenes behind the coupling verification cases, each runnable with either method.
-#include "solver/verification/CouplingVerification.h"
 #include "solver/core/Constants.h"
+#include "solver/verification/CouplingVerification.h"
 
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
@@ -86,9 +86,13 @@ CouplingParams latticeUnits(CouplingMethod method, Real ratio) {
 Real steadyDarcyMomentum(Rig& rig, long long maxSteps, long long& steps, bool& finite) {
     Real last = 0;
     for (steps = 0; steps < maxSteps;) {
-        for (int k = 0; k < 500; ++k, ++steps) rig.step(0, 1);
+        for (int k = 0; k < 500; ++k, ++steps)
+            rig.step(0, 1);
         const Real u = rig.superficialMomentumX();
-        if (!std::isfinite(u)) { finite = false; return u; }
+        if (!std::isfinite(u)) {
+            finite = false;
+            return u;
+        }
         if (steps > 1000 && std::abs(u - last) <= 1e-6 * std::abs(u)) return u;
         last = u;
     }
@@ -138,7 +142,10 @@ CouplingRun settlingDisc(CouplingMethod method, int nodes) {
         rig.step(dt, 1);
         ++run.steps;
         const Real vy = rig.grains.particles().vy[0];
-        if (!std::isfinite(vy)) { run.finite = false; break; }
+        if (!std::isfinite(vy)) {
+            run.finite = false;
+            break;
+        }
         ys.push_back(rig.grains.particles().y[0]);
         vs.push_back(-vy);
     }
@@ -147,7 +154,10 @@ CouplingRun settlingDisc(CouplingMethod method, int nodes) {
     Real sum = 0;
     long long count = 0;
     for (std::size_t k = 0; k < ys.size(); ++k)
-        if (ys[k] <= window) { sum += vs[k]; ++count; }
+        if (ys[k] <= window) {
+            sum += vs[k];
+            ++count;
+        }
     run.value = count > 0 ? sum / count * d / nu : 0;
     run.wall_s = secondsSince(start);
     return run;
@@ -196,9 +206,13 @@ CouplingRun discShear(CouplingMethod method, int nodes, int channel) {
     // for a steady rotation, so that a slow approach is not mistaken for convergence.
     const long long minSteps = static_cast<long long>(4 * (4 * radius) * (4 * radius) / nu);
     while (run.steps < 400000) {
-        for (int k = 0; k < 1000; ++k, ++run.steps) rig.step(1.0, 1);
+        for (int k = 0; k < 1000; ++k, ++run.steps)
+            rig.step(1.0, 1);
         const Real w = rig.grains.particles().omega[0];
-        if (!std::isfinite(w)) { run.finite = false; break; }
+        if (!std::isfinite(w)) {
+            run.finite = false;
+            break;
+        }
         if (run.steps > minSteps && std::abs(w - last) <= 1e-6 * std::abs(target)) break;
         last = w;
     }

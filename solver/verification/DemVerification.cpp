@@ -17,7 +17,8 @@ namespace {
 
 constexpr int kOnsetPhases = 16;
 
-/// The paper's grain parameters (docs/design.md §5b) for a dry case with restitution e and its DEM step.
+/// The paper's grain parameters (docs/design.md §5b) for a dry case with restitution e and its DEM
+/// step.
 CaseSpec demCase(double restitution) {
     CaseSpec spec;
     spec.fluid.enabled = false;
@@ -47,7 +48,8 @@ double collide(const CaseSpec& spec, double dt, bool wall, double phase) {
     system.computeForces();
     // The contact lasts 1 / dt_safety steps; run three times that.
     const long long steps = static_cast<long long>(3 / spec.grains.dt_safety) + 10;
-    for (long long k = 0; k < steps; ++k) system.step(dt);
+    for (long long k = 0; k < steps; ++k)
+        system.step(dt);
     const auto& p = system.particles();
     return wall ? p.vx[0] / v : (p.vx[1] - p.vx[0]) / (2 * v);
 }
@@ -66,11 +68,13 @@ VerificationResult restitutionResult(double e, bool wall) {
     }
     const double mean = sum / kOnsetPhases;
     char quantity[160];
-    std::snprintf(quantity, sizeof quantity, "%s restitution e=%.1f, mean of %d onset phases (worst %.4f)",
+    std::snprintf(quantity, sizeof quantity,
+                  "%s restitution e=%.1f, mean of %d onset phases (worst %.4f)",
                   wall ? "disc-wall" : "disc-disc", e, kOnsetPhases, worst);
-    VerificationResult r = compareRelative("restitution", quantity, mean, e, 0.005,
-                                           "linear spring-dashpot: ln e = -pi zeta / sqrt(1 - zeta^2), "
-                                           "contact ends at zero overlap (Schwager & Poeschel 2007)");
+    VerificationResult r =
+        compareRelative("restitution", quantity, mean, e, 0.005,
+                        "linear spring-dashpot: ln e = -pi zeta / sqrt(1 - zeta^2), "
+                        "contact ends at zero overlap (Schwager & Poeschel 2007)");
     // The tolerance is absolute on e (issue 4: error <= 0.005).
     r.error = std::abs(mean - e);
     r.passed = std::isfinite(mean) && r.error <= r.tolerance;
@@ -101,16 +105,19 @@ InclineRun incline(double wallFriction) {
     const auto& p = system.particles();
     // Let the tangential spring settle (a few hundred contact times), then difference v and omega.
     const long long settle = 20000, measure = 20000;
-    for (long long k = 0; k < settle; ++k) system.step(dt);
+    for (long long k = 0; k < settle; ++k)
+        system.step(dt);
     const double v0 = p.vx[0], w0 = p.omega[0];
-    for (long long k = 0; k < measure; ++k) system.step(dt);
+    for (long long k = 0; k < measure; ++k)
+        system.step(dt);
     const double span = measure * dt;
     return {(p.vx[0] - v0) / span, -(p.omega[0] - w0) / span};
 }
 
 std::vector<VerificationResult> inclineResults() {
     const double beta = kPi / 4, g = 9.81, r = 0.6e-3;
-    const char* source = "rigid-body mechanics of a disc on an incline (e.g. Goldstein, Classical Mechanics)";
+    const char* source =
+        "rigid-body mechanics of a disc on an incline (e.g. Goldstein, Classical Mechanics)";
     std::vector<VerificationResult> out;
     auto timed = [&](auto&& body) {
         const auto start = std::chrono::steady_clock::now();
@@ -119,25 +126,27 @@ std::vector<VerificationResult> inclineResults() {
     };
     timed([&] {
         const InclineRun run = incline(0.0);
-        out.push_back(compareRelative("incline", "frictionless: a = g sin(beta), beta = 45 deg", run.acceleration,
-                                      g * std::sin(beta), 0.005, source));
+        out.push_back(compareRelative("incline", "frictionless: a = g sin(beta), beta = 45 deg",
+                                      run.acceleration, g * std::sin(beta), 0.005, source));
     });
     timed([&] {
         const InclineRun run = incline(0.5);
-        out.push_back(compareRelative("incline", "rolling without slip (mu_w = 0.5): a = 2/3 g sin(beta)",
-                                      run.acceleration, 2.0 / 3.0 * g * std::sin(beta), 0.005, source));
+        out.push_back(
+            compareRelative("incline", "rolling without slip (mu_w = 0.5): a = 2/3 g sin(beta)",
+                            run.acceleration, 2.0 / 3.0 * g * std::sin(beta), 0.005, source));
     });
     const double mu = 0.2;
     const InclineRun slip = [&] {
         const auto start = std::chrono::steady_clock::now();
         InclineRun run = incline(mu);
-        out.push_back(compareRelative("incline", "slipping (mu_w = 0.2): a = g (sin(beta) - mu cos(beta))",
-                                      run.acceleration, g * (std::sin(beta) - mu * std::cos(beta)), 0.005, source));
+        out.push_back(compareRelative(
+            "incline", "slipping (mu_w = 0.2): a = g (sin(beta) - mu cos(beta))", run.acceleration,
+            g * (std::sin(beta) - mu * std::cos(beta)), 0.005, source));
         out.back().wall_s = secondsSince(start);
         return run;
     }();
-    out.push_back(compareRelative("incline", "slipping (mu_w = 0.2): alpha = 2 mu g cos(beta) / R", slip.angular,
-                                  2 * mu * g * std::cos(beta) / r, 0.005, source));
+    out.push_back(compareRelative("incline", "slipping (mu_w = 0.2): alpha = 2 mu g cos(beta) / R",
+                                  slip.angular, 2 * mu * g * std::cos(beta) / r, 0.005, source));
     return out;
 }
 
@@ -145,19 +154,25 @@ std::vector<VerificationResult> inclineResults() {
 
 std::vector<VerificationCase> demVerificationCases() {
     return {
-        {"restitution", "binary disc-disc and disc-wall collisions reach e = 0.1, 0.5, 0.9 (|error| <= 0.005)",
+        {"restitution",
+         "binary disc-disc and disc-wall collisions reach e = 0.1, 0.5, 0.9 (|error| <= 0.005)",
          [](const VerificationOptions&) {
              std::vector<VerificationResult> out;
              for (bool wall : {false, true})
-                 for (double e : {0.1, 0.5, 0.9}) out.push_back(restitutionResult(e, wall));
+                 for (double e : {0.1, 0.5, 0.9})
+                     out.push_back(restitutionResult(e, wall));
              return out;
          }},
-        {"incline", "disc on a 45-degree slope: frictionless, rolling and slipping accelerations (0.5 %)",
+        {"incline",
+         "disc on a 45-degree slope: frictionless, rolling and slipping accelerations (0.5 %)",
          [](const VerificationOptions&) { return inclineResults(); }},
-        {"packing", "packing generator meets the dense (0.83) and loose (0.79) targets within 0.005",
+        {"packing",
+         "packing generator meets the dense (0.83) and loose (0.79) targets within 0.005",
          [](const VerificationOptions& options) { return packingResults(options); }},
-        {"dry-collapse-scaling", "dry column collapse: normalised runout grows linearly with a (a <= 1.5)",
-         [](const VerificationOptions& options) { return dryCollapseScalingResults(options); }, true},
+        {"dry-collapse-scaling",
+         "dry column collapse: normalised runout grows linearly with a (a <= 1.5)",
+         [](const VerificationOptions& options) { return dryCollapseScalingResults(options); },
+         true},
     };
 }
 

@@ -37,7 +37,10 @@ double observedOrder(const std::vector<int>& nodes, const std::vector<double>& e
     const double n = static_cast<double>(nodes.size());
     for (std::size_t k = 0; k < nodes.size(); ++k) {
         const double x = -std::log(static_cast<double>(nodes[k])), y = std::log(errors[k]);
-        sx += x; sy += y; sxx += x * x; sxy += x * y;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
     }
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
@@ -47,7 +50,8 @@ VerificationResult orderResult(std::string name, const std::vector<int>& nodes,
                                const std::vector<double>& errors, std::string method) {
     const double order = observedOrder(nodes, errors);
     std::string list;
-    for (int n : nodes) list += (list.empty() ? "" : ", ") + std::to_string(n);
+    for (int n : nodes)
+        list += (list.empty() ? "" : ", ") + std::to_string(n);
     VerificationResult r;
     r.name = std::move(name);
     r.quantity = "observed order of accuracy (N = " + list + ")";
@@ -85,12 +89,14 @@ struct ResolutionSeries {
     /// The values of metric over the series.
     std::vector<double> values(const std::string& metric) const {
         std::vector<double> out;
-        for (const auto& run : runs) out.push_back(run.metrics.at(metric));
+        for (const auto& run : runs)
+            out.push_back(run.metrics.at(metric));
         return out;
     }
     /// The run at n nodes (n must be in the series).
     const FlowRun& at(int n) const {
-        return runs.at(static_cast<std::size_t>(std::find(nodes.begin(), nodes.end(), n) - nodes.begin()));
+        return runs.at(
+            static_cast<std::size_t>(std::find(nodes.begin(), nodes.end(), n) - nodes.begin()));
     }
 };
 
@@ -120,18 +126,20 @@ std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) 
     const ResolutionSeries series = runSeries("taylor_green", options);
     const FlowRun& run = series.at(32);
     auto r = compareRelative("taylor-green", "decay rate [1/s] (32 nodes per wavelength)",
-                             run.metrics.at("decay_rate_1_s"), run.metrics.at("decay_rate_analytic_1_s"),
-                             0.005, kTaylorGreenSource);
+                             run.metrics.at("decay_rate_1_s"),
+                             run.metrics.at("decay_rate_analytic_1_s"), 0.005, kTaylorGreenSource);
     r.method = "mrt";
     r.wall_s = run.wall_s;
-    auto order = orderResult("taylor-green", series.nodes, series.values("decay_rate_error"), "mrt");
+    auto order =
+        orderResult("taylor-green", series.nodes, series.values("decay_rate_error"), "mrt");
     order.wall_s = series.wall_s;
     std::vector<VerificationResult> out{r, order};
     // LES at low Re: the Smagorinsky eddy viscosity must not spoil a resolved laminar flow.
     const FlowRun les = runFlow(fluidCase("taylor_green", 32, "mrt_les"));
-    auto withLes = compareRelative("taylor-green", "decay rate [1/s] with LES on (32 nodes, Re = 10)",
-                                   les.metrics.at("decay_rate_1_s"),
-                                   les.metrics.at("decay_rate_analytic_1_s"), 0.02, kTaylorGreenSource);
+    auto withLes =
+        compareRelative("taylor-green", "decay rate [1/s] with LES on (32 nodes, Re = 10)",
+                        les.metrics.at("decay_rate_1_s"), les.metrics.at("decay_rate_analytic_1_s"),
+                        0.02, kTaylorGreenSource);
     withLes.method = "mrt_les";
     withLes.wall_s = les.wall_s;
     out.push_back(withLes);
@@ -151,7 +159,8 @@ std::vector<VerificationResult> cavity(const VerificationOptions& options) {
 std::vector<VerificationResult> cylinder(const VerificationOptions& options) {
     const int d = options.long_run ? 40 : 20;
     const FlowRun run = runFlow(fluidCase("cylinder", d, "mrt"));
-    const char* source = "Schäfer & Turek (1996), 2D-1 (Re = 20): C_D in [5.57, 5.59], dp in [0.1172, 0.1176]";
+    const char* source =
+        "Schäfer & Turek (1996), 2D-1 (Re = 20): C_D in [5.57, 5.59], dp in [0.1172, 0.1176]";
     const std::string tag = " (D = " + std::to_string(d) + " nodes)";
     // Quick: within 2 % of 5.58; long: inside the published interval [5.57, 5.59].
     auto drag = compareRelative("cylinder-2d1", "drag coefficient C_D" + tag,
@@ -172,14 +181,17 @@ std::vector<VerificationResult> stabilityResults(const VerificationOptions& opti
 
 std::vector<VerificationCase> fluidVerificationCases() {
     return {
-        {"poiseuille", "body-force channel: L2 error <= 1e-3 at 16 nodes, order >= 1.8", poiseuille},
-        {"taylor-green", "decaying vortex: decay rate within 0.5 % at 32 nodes, order >= 1.8, LES within 2 %",
+        {"poiseuille", "body-force channel: L2 error <= 1e-3 at 16 nodes, order >= 1.8",
+         poiseuille},
+        {"taylor-green",
+         "decaying vortex: decay rate within 0.5 % at 32 nodes, order >= 1.8, LES within 2 %",
          taylorGreen},
-        {"cavity-re100", "lid-driven cavity at Re = 100, 128^2: centreline u within 0.01 of Ghia et al.",
-         cavity},
-        {"cylinder-2d1", "Schäfer-Turek 2D-1 (Re = 20): C_D within 2 % of 5.58 (D = 20), dp within 2 %",
-         cylinder},
-        {"stability", "cavity at tau - 0.5 = 1e-4: MRT+LES stays bounded 20,000 steps, BGK is stopped",
+        {"cavity-re100",
+         "lid-driven cavity at Re = 100, 128^2: centreline u within 0.01 of Ghia et al.", cavity},
+        {"cylinder-2d1",
+         "Schäfer-Turek 2D-1 (Re = 20): C_D within 2 % of 5.58 (D = 20), dp within 2 %", cylinder},
+        {"stability",
+         "cavity at tau - 0.5 = 1e-4: MRT+LES stays bounded 20,000 steps, BGK is stopped",
          stabilityResults},
     };
 }

@@ -51,7 +51,8 @@ CaseSpec fluidCase(const std::string& scene, int nodes, const std::string& colli
         // both together: D = 20 at U_max 0.05 (tau 0.6), D = 40 at 0.0125 (tau 0.55).
         // The default s_q = 1.9 made the Zou-He inlet nodes diverge at tau = 0.6 (measured).
         c.flow.lattice_velocity = 0.05 * (20.0 / nodes) * (20.0 / nodes);
-        const double tau = 0.5 + 3.0 * (2.0 / 3.0) * c.flow.lattice_velocity * nodes / c.flow.reynolds;
+        const double tau =
+            0.5 + 3.0 * (2.0 / 3.0) * c.flow.lattice_velocity * nodes / c.flow.reynolds;
         c.fluid.s_q = 1.0 / (0.5 + (3.0 / 16.0) / (tau - 0.5));
     } else {
         throw InputError("no fluid verification case for scene '" + scene + "'");

@@ -10,16 +10,16 @@ namespace lbdem::solver {
 
 /// One compared quantity of a verification case (the `lbdem verify --json` record).
 struct VerificationResult {
-    std::string name;      ///< case name, e.g. "poiseuille"
-    std::string quantity;  ///< what was compared, e.g. "L2 relative error (16 nodes)"
-    double value = 0;      ///< computed value
-    double reference = 0;  ///< analytic or published value
-    double error = 0;      ///< the measure compared with tolerance (relative unless stated)
-    double tolerance = 0;  ///< pass when error <= tolerance
+    std::string name;     ///< case name, e.g. "poiseuille"
+    std::string quantity; ///< what was compared, e.g. "L2 relative error (16 nodes)"
+    double value = 0;     ///< computed value
+    double reference = 0; ///< analytic or published value
+    double error = 0;     ///< the measure compared with tolerance (relative unless stated)
+    double tolerance = 0; ///< pass when error <= tolerance
     bool passed = false;
-    double wall_s = 0;     ///< wall time spent on this quantity
-    std::string method;    ///< variant, e.g. coupling method or collision model; may be empty
-    std::string source;    ///< citation of the reference value
+    double wall_s = 0;  ///< wall time spent on this quantity
+    std::string method; ///< variant, e.g. coupling method or collision model; may be empty
+    std::string source; ///< citation of the reference value
 };
 
 /// How a verification case should run.
@@ -33,7 +33,8 @@ struct VerificationCase {
     std::string name;        ///< the name `lbdem verify NAME` takes
     std::string description; ///< one line for `lbdem verify --list`
     std::function<std::vector<VerificationResult>(const VerificationOptions&)> run;
-    bool slow = false; ///< minutes even in its quick form (or empty): the default test suite leaves it to `long`
+    bool slow = false; ///< minutes even in its quick form (or empty): the default test suite leaves
+                       ///< it to `long`
 };
 
 /// Every verification case of this build, in a stable order; each run first applies

@@ -16,8 +16,8 @@ namespace {
 
 /// Functions returning each module's cases; a module adds its provider here.
 using Provider = std::vector<VerificationCase> (*)();
-const Provider kProviders[] = {fluidVerificationCases, demVerificationCases, couplingVerificationCases,
-                              couplingRestCases};
+const Provider kProviders[] = {fluidVerificationCases, demVerificationCases,
+                               couplingVerificationCases, couplingRestCases};
 
 } // namespace
 

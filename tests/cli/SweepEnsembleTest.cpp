@@ -69,21 +69,24 @@ void writeRun(const cli::SweepEntry& e, const char* status) {
     std::ofstream series(e.dir / "timeseries.csv");
     // Pore pressure: dense -100 seed Pa (suction), loose +10 Pa but -5 Pa for seed 1 at 5 deg.
     const bool dense = e.spec.grains.packing > 0.81;
-    const double pore = dense ? -100.0 * e.seed : (e.spec.domain.slope_deg > 0 && e.seed == 1 ? -5.0 : 10.0);
+    const double pore =
+        dense ? -100.0 * e.seed : (e.spec.domain.slope_deg > 0 && e.seed == 1 ? -5.0 : 10.0);
     series << "t_s,t_over_tc,step,ke_over_ep0,runout_m,runout_normalised,froude_densimetric,"
               "pore_pressure_failure_plane_pa\n";
     for (int k = 0; k <= 16; ++k) {
         const double t = 0.25 * k, grown = runout * (1 - std::exp(-t));
-        series << 0.01 * t << "," << t << "," << 100 * k << "," << 0.1 * runout * t * std::exp(-t) << ","
-               << initialWidth * (1 + grown) << "," << grown << "," << 0.5 * runout * t * std::exp(-t) << ","
-               << pore << "\n";
+        series << 0.01 * t << "," << t << "," << 100 * k << "," << 0.1 * runout * t * std::exp(-t)
+               << "," << initialWidth * (1 + grown) << "," << grown << ","
+               << 0.5 * runout * t * std::exp(-t) << "," << pore << "\n";
     }
     std::ofstream summary(e.dir / "summary.json");
     const bool finished = std::string(status) == "finished";
-    summary << "{\"finished\": " << (finished ? "true" : "false") << ", \"runout_final\": " << runout
-            << ", \"ke_peak\": " << 0.1 * runout / std::exp(1.0) << ", \"t_ke_peak_over_tc\": 1.0, "
+    summary << "{\"finished\": " << (finished ? "true" : "false")
+            << ", \"runout_final\": " << runout << ", \"ke_peak\": " << 0.1 * runout / std::exp(1.0)
+            << ", \"t_ke_peak_over_tc\": 1.0, "
             << "\"packing_final\": " << (e.spec.grains.packing > 0.81 ? 0.78 : 0.775)
-            << (std::string(status) == "unstable" ? ", \"stop_reason\": \"diverged\"" : "") << "}\n";
+            << (std::string(status) == "unstable" ? ", \"stop_reason\": \"diverged\"" : "")
+            << "}\n";
 }
 
 #ifdef LBDEM_HAS_VIS
@@ -95,14 +98,15 @@ int pixelsNear(vtkImageData* image, int r, int g, int b, int tolerance) {
     for (int y = 0; y < dims[1]; ++y)
         for (int x = 0; x < dims[0]; ++x) {
             const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
-            count += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance;
+            count += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
+                     std::abs(p[2] - b) <= tolerance;
         }
     return count;
 }
 #endif
 
-const cli::Finding* findingOf(const std::vector<cli::Finding>& findings, const std::string& statement,
-                              const std::string& where) {
+const cli::Finding* findingOf(const std::vector<cli::Finding>& findings,
+                              const std::string& statement, const std::string& where) {
     for (const auto& f : findings)
         if (f.statement == statement && f.where == where) return &f;
     return nullptr;
@@ -139,7 +143,8 @@ void SweepEnsembleTest::initTestCase() {
                     auto& e = m_entries.back();
                     // dense 5 deg submerged, seed 2: a 0.12 m domain, whose end (less one largest
                     // diameter, 0.1178 m) its front passes (0.05 (1 + 1.95 (1 - e^-4)) = 0.146 m).
-                    if (packing > 0.81 && slope > 0 && submerged && seed == 2) e.spec.domain.width_m = 0.12;
+                    if (packing > 0.81 && slope > 0 && submerged && seed == 2)
+                        e.spec.domain.width_m = 0.12;
                     const bool unstable = packing > 0.81 && slope == 0 && submerged && seed == 3;
                     writeRun(e, unstable ? "unstable" : "finished");
                 }
@@ -176,7 +181,8 @@ void SweepEnsembleTest::runsOfASweepWithSeeds() {
     }
     io::SweepSpec twice = sweep; // one case name twice: one output folder for two cases
     twice.cases.push_back(sweep.cases.front());
-    QVERIFY_EXCEPTION_THROWN(cli::planSweepRuns(twice, cli::firstSeeds(2), "/tmp/S"), solver::InputError);
+    QVERIFY_EXCEPTION_THROWN(cli::planSweepRuns(twice, cli::firstSeeds(2), "/tmp/S"),
+                             solver::InputError);
     const auto single = cli::planSweepRuns(sweep, {}, "/tmp/S");
     QCOMPARE(single.size(), std::size_t(1));
     QCOMPARE(single[0].entry.dir.string(), std::string("/tmp/S/loose_0deg_dry"));
@@ -189,25 +195,32 @@ void SweepEnsembleTest::spreadPerCase() {
     const auto& denseDry0 = cases[0];
     QCOMPARE(denseDry0.name, std::string("dense_0deg_dry"));
     QCOMPARE(denseDry0.finished, 3);
-    const auto& runout = denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::RunoutFinal)];
+    const auto& runout =
+        denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::RunoutFinal)];
     QVERIFY(std::abs(runout.mean - 2.2) < 1e-12 && std::abs(runout.sd - 0.1) < 1e-12);
     QVERIFY(std::abs(runout.min - 2.1) < 1e-12 && std::abs(runout.max - 2.3) < 1e-12);
     // At 3 tau_c the synthetic runout is R (1 - e^-3), between the rows at 3.0 (exactly a row).
     const auto& at3 = denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::RunoutAt3Tc)];
     QVERIFY(std::abs(at3.mean - 2.2 * (1 - std::exp(-3.0))) < 1e-5);
-    QCOMPARE(denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::FroudeAt3Tc)].count, 0); // dry
+    QCOMPARE(denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::FroudeAt3Tc)].count,
+             0); // dry
     const auto& denseWet0 = cases[1];
     QCOMPARE(denseWet0.finished, 2);
     QCOMPARE(denseWet0.unstable, 1);
     QCOMPARE(cases[3].name, std::string("dense_5deg_submerged"));
     QCOMPARE(cases[3].endReached, 1);
     const std::string csv = readText(m_out / "sweep.csv");
-    QVERIFY2(csv.rfind("case,packing,slope_deg,medium,seeds,finished,unstable,front_at_end,runout_final_mean,"
-                       "runout_final_sd,runout_final_min,runout_final_max,ke_peak_mean,",
-                       0) == 0,
+    QVERIFY2(
+        csv.rfind(
+            "case,packing,slope_deg,medium,seeds,finished,unstable,front_at_end,runout_final_mean,"
+            "runout_final_sd,runout_final_min,runout_final_max,ke_peak_mean,",
+            0) == 0,
+        csv.c_str());
+    QVERIFY2(csv.find("\ndense_0deg_dry,0.83,0.0,dry,3,3,0,0,2.2,0.1,2.1,2.3,") !=
+                 std::string::npos,
              csv.c_str());
-    QVERIFY2(csv.find("\ndense_0deg_dry,0.83,0.0,dry,3,3,0,0,2.2,0.1,2.1,2.3,") != std::string::npos, csv.c_str());
-    QVERIFY2(csv.find("\ndense_0deg_submerged,0.83,0.0,submerged,3,2,1,0,1.5,0,1.5,1.5,") != std::string::npos,
+    QVERIFY2(csv.find("\ndense_0deg_submerged,0.83,0.0,submerged,3,2,1,0,1.5,0,1.5,1.5,") !=
+                 std::string::npos,
              csv.c_str());
     // Pore pressure at 1 tau_c of its two finished seeds, -100 and -200 Pa: sd 70.71 Pa.
     QVERIFY2(csv.find(",-150,70.7107,-200,-100\n") != std::string::npos, csv.c_str());
@@ -226,40 +239,53 @@ void SweepEnsembleTest::findingsSeedBySeed() {
     const auto* loose = findingOf(findings, "loose: submerged runout longer than dry", "5 deg");
     QVERIFY(loose);
     QCOMPARE(loose->fails, 3);
-    const auto* grows = findingOf(findings, "dense, dry: runout grows with slope", "0 deg to 5 deg");
+    const auto* grows =
+        findingOf(findings, "dense, dry: runout grows with slope", "0 deg to 5 deg");
     QVERIFY(grows);
     QCOMPARE(grows->holds, 3);
-    const auto* packing = findingOf(findings, "dry: dense and loose end within 0.01 in packing", "0 deg");
+    const auto* packing =
+        findingOf(findings, "dry: dense and loose end within 0.01 in packing", "0 deg");
     QVERIFY(packing);
     QCOMPARE(packing->holds, 3); // 0.78 against 0.775
-    const auto* suction = findingOf(findings, "dense, submerged: pore pressure on the failure plane negative at 1 tau_c",
-                                    "0 deg");
-    const auto* excess = findingOf(findings, "loose, submerged: pore pressure on the failure plane positive at 1 tau_c",
-                                   "5 deg");
+    const auto* suction = findingOf(
+        findings, "dense, submerged: pore pressure on the failure plane negative at 1 tau_c",
+        "0 deg");
+    const auto* excess = findingOf(
+        findings, "loose, submerged: pore pressure on the failure plane positive at 1 tau_c",
+        "5 deg");
     QVERIFY(suction && excess);
     QCOMPARE(suction->holds, 2);
     QCOMPARE(suction->seeds(), 2);
     QCOMPARE(excess->holds, 2);
     QCOMPARE(excess->fails, 1);
     const std::string csv = readText(m_out / "findings.csv");
-    QVERIFY2(csv.find("\"dense: dry runout longer than submerged\",5 deg,1,1,1,3\n") != std::string::npos, csv.c_str());
+    QVERIFY2(csv.find("\"dense: dry runout longer than submerged\",5 deg,1,1,1,3\n") !=
+                 std::string::npos,
+             csv.c_str());
 }
 
 void SweepEnsembleTest::reportFiles() {
     const std::string md = readText(m_out / "sweep.md");
     QVERIFY2(md.find("## Ensemble over packing seeds") != std::string::npos, md.c_str());
-    QVERIFY2(md.find("| dense_0deg_dry | 3 | 3 | 0 | 2.200 ± 0.100 | 2.100–2.300 |") != std::string::npos, md.c_str());
-    QVERIFY2(md.find("| dense_5deg_submerged | 3 | 3 | 0 | 2.283 ± 0.621 (end: 1) | 1.900–3.000 |") !=
+    QVERIFY2(md.find("| dense_0deg_dry | 3 | 3 | 0 | 2.200 ± 0.100 | 2.100–2.300 |") !=
                  std::string::npos,
              md.c_str());
-    QVERIFY2(md.find("| dense: dry runout longer than submerged | 5 deg | holds for 1 of 3 seeds (1 undecided: a "
+    QVERIFY2(
+        md.find("| dense_5deg_submerged | 3 | 3 | 0 | 2.283 ± 0.621 (end: 1) | 1.900–3.000 |") !=
+            std::string::npos,
+        md.c_str());
+    QVERIFY2(md.find("| dense: dry runout longer than submerged | 5 deg | holds for 1 of 3 seeds "
+                     "(1 undecided: a "
                      "front at the domain's end) |") != std::string::npos,
              md.c_str());
-    QVERIFY2(md.find("## Runs") != std::string::npos && md.find("| dense_5deg_submerged_s2 |") != std::string::npos,
+    QVERIFY2(md.find("## Runs") != std::string::npos &&
+                 md.find("| dense_5deg_submerged_s2 |") != std::string::npos,
              md.c_str());
     const std::string runs = readText(m_out / "runs.csv");
     QCOMPARE(std::count(runs.begin(), runs.end(), '\n'), 25L); // header + 24 runs
-    QVERIFY2(runs.find("\ndense_0deg_submerged_s3,0.83,0.0,submerged,unfinished,") != std::string::npos, runs.c_str());
+    QVERIFY2(runs.find("\ndense_0deg_submerged_s3,0.83,0.0,submerged,unfinished,") !=
+                 std::string::npos,
+             runs.c_str());
 }
 
 void SweepEnsembleTest::figuresHaveBands() {

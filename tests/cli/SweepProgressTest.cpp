@@ -28,7 +28,8 @@ void writeSeries(const fs::path& dir, double lastTc) {
     fs::create_directories(dir);
     std::ofstream series(dir / "timeseries.csv");
     series << "t_s,t_over_tc,step,runout_normalised\n";
-    for (int k = 0; 0.25 * k <= lastTc + 1e-12; ++k) series << 0.01 * k << "," << 0.25 * k << "," << 10 * k << ",0\n";
+    for (int k = 0; 0.25 * k <= lastTc + 1e-12; ++k)
+        series << 0.01 * k << "," << 0.25 * k << "," << 10 * k << ",0\n";
 }
 
 } // namespace

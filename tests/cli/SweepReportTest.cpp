@@ -61,8 +61,9 @@ void writeCase(const cli::SweepEntry& e, bool finished) {
            << (e.spec.fluid.enabled ? ",froude_densimetric" : "") << "\n";
     for (int k = 0; k <= 16; ++k) {
         const double t = 0.25 * k;
-        series << 0.01 * t << "," << t << "," << 100 * k << "," << 0.1 * runout * t * std::exp(-t) << ","
-               << initialWidth * (1 + runout * (1 - std::exp(-t))) << "," << runout * (1 - std::exp(-t));
+        series << 0.01 * t << "," << t << "," << 100 * k << "," << 0.1 * runout * t * std::exp(-t)
+               << "," << initialWidth * (1 + runout * (1 - std::exp(-t))) << ","
+               << runout * (1 - std::exp(-t));
         if (e.spec.fluid.enabled) series << "," << 0.5 * runout * t * std::exp(-t);
         series << "\n";
     }
@@ -115,7 +116,8 @@ void SweepReportTest::initTestCase() {
                 entries.push_back(entry(m_out, packing, slope, submerged));
                 // dense 5 deg dry in a short domain: its front reaches the end (0.12 m less one
                 // largest diameter, 2.16 mm) at t/tau_c = 1.134, so the row at 1.25 is the first.
-                if (packing > 0.81 && slope > 0 && !submerged) entries.back().spec.domain.width_m = 0.12;
+                if (packing > 0.81 && slope > 0 && !submerged)
+                    entries.back().spec.domain.width_m = 0.12;
                 writeCase(entries.back(), true);
             }
     entries.push_back(entry(m_out, 0.83, 7.5, true)); // interrupted: summary says not finished
@@ -127,8 +129,10 @@ void SweepReportTest::initTestCase() {
 void SweepReportTest::tableRows() {
     const std::string csv = readText(m_out / "sweep.csv");
     QCOMPARE(std::count(csv.begin(), csv.end(), '\n'), 11L); // header + 10 cases
-    QVERIFY2(csv.find("dense_5deg_dry,0.83,5.0,dry,finished,2,1.25,") != std::string::npos, csv.c_str());
-    QVERIFY2(csv.find("loose_5deg_submerged,0.79,5.0,submerged,finished,1.2,,") != std::string::npos,
+    QVERIFY2(csv.find("dense_5deg_dry,0.83,5.0,dry,finished,2,1.25,") != std::string::npos,
+             csv.c_str());
+    QVERIFY2(csv.find("loose_5deg_submerged,0.79,5.0,submerged,finished,1.2,,") !=
+                 std::string::npos,
              csv.c_str());
     QVERIFY2(csv.find("dense_7.5deg_submerged,0.83,7.5,submerged,unfinished,") != std::string::npos,
              csv.c_str());

@@ -25,15 +25,24 @@ void CaseParserTest::badCase_data() {
     QTest::addColumn<int>("line");
     QTest::addColumn<QString>("key");
     QTest::addColumn<QString>("hint");
-    QTest::newRow("misspelt key") << "misspelt_key.toml" << 5 << "fluid.tua" << "did you mean 'fluid.tau'?";
-    QTest::newRow("out of range") << "out_of_range.toml" << 4 << "grains.packing" << "allowed 0.5 to 0.9";
-    QTest::newRow("wrong type") << "wrong_type.toml" << 4 << "grains.count" << "expected a whole number, got a string";
-    QTest::newRow("unknown section") << "unknown_section.toml" << 3 << "flud" << "did you mean [fluid]?";
-    QTest::newRow("bad choice") << "bad_choice.toml" << 4 << "fluid.collision" << "one of bgk, mrt, mrt_les";
-    QTest::newRow("invalid toml") << "invalid_toml.toml" << 3 << "" << "is not valid TOML";
-    QTest::newRow("missing schema") << "missing_schema.toml" << 1 << "schema" << "schema = 1";
-    QTest::newRow("tau below half") << "tau_below_half.toml" << 4 << "fluid.tau" << "must exceed 0.5";
-    QTest::newRow("fractional integer") << "fractional_integer.toml" << 4 << "grains.count" << "expected a whole number";
+    QTest::newRow("misspelt key") << "misspelt_key.toml" << 5 << "fluid.tua"
+                                  << "did you mean 'fluid.tau'?";
+    QTest::newRow("out of range") << "out_of_range.toml" << 4 << "grains.packing"
+                                  << "allowed 0.5 to 0.9";
+    QTest::newRow("wrong type") << "wrong_type.toml" << 4 << "grains.count"
+                                << "expected a whole number, got a string";
+    QTest::newRow("unknown section") << "unknown_section.toml" << 3 << "flud"
+                                     << "did you mean [fluid]?";
+    QTest::newRow("bad choice") << "bad_choice.toml" << 4 << "fluid.collision"
+                                << "one of bgk, mrt, mrt_les";
+    QTest::newRow("invalid toml") << "invalid_toml.toml" << 3 << ""
+                                  << "is not valid TOML";
+    QTest::newRow("missing schema") << "missing_schema.toml" << 1 << "schema"
+                                    << "schema = 1";
+    QTest::newRow("tau below half") << "tau_below_half.toml" << 4 << "fluid.tau"
+                                    << "must exceed 0.5";
+    QTest::newRow("fractional integer") << "fractional_integer.toml" << 4 << "grains.count"
+                                        << "expected a whole number";
 }
 
 void CaseParserTest::badCase() {
@@ -64,7 +73,8 @@ void CaseParserTest::defaultsRoundTrip() {
     const std::string text = io::formatCase(changed);
     const solver::CaseSpec back = io::parseCase(text, "roundtrip.toml");
     for (const auto& decl : solver::CaseSchema::instance().params())
-        QVERIFY2(decl.get(back) == decl.get(changed), qPrintable(QString::fromStdString(decl.path())));
+        QVERIFY2(decl.get(back) == decl.get(changed),
+                 qPrintable(QString::fromStdString(decl.path())));
 }
 
 void CaseParserTest::overrides() {
@@ -81,11 +91,16 @@ void CaseParserTest::overrides() {
 void CaseParserTest::badOverride_data() {
     QTest::addColumn<QString>("assignment");
     QTest::addColumn<QString>("hint");
-    QTest::newRow("unknown") << "fluid.tua=0.5" << "did you mean 'fluid.tau'?";
-    QTest::newRow("type") << "grains.count=abc" << "expected a whole number";
-    QTest::newRow("range") << "grains.packing=2" << "out of range";
-    QTest::newRow("no equals") << "fluid.tau" << "expected section.key=value";
-    QTest::newRow("cross-key") << "fluid.tau=0.4" << "must exceed 0.5";
+    QTest::newRow("unknown") << "fluid.tua=0.5"
+                             << "did you mean 'fluid.tau'?";
+    QTest::newRow("type") << "grains.count=abc"
+                          << "expected a whole number";
+    QTest::newRow("range") << "grains.packing=2"
+                           << "out of range";
+    QTest::newRow("no equals") << "fluid.tau"
+                               << "expected section.key=value";
+    QTest::newRow("cross-key") << "fluid.tau=0.4"
+                               << "must exceed 0.5";
 }
 
 void CaseParserTest::badOverride() {

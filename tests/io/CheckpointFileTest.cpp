@@ -28,7 +28,8 @@ void CheckpointFileTest::roundTripIsBitForBit() {
     QTemporaryDir dir;
     io::CheckpointData data;
     data.case_toml = "schema = 1\nname = \"x\"\n";
-    data.state.reals["lattice/f"] = {0.1, 1.0 / 3.0, -0.0, std::numeric_limits<double>::denorm_min(), 1e300};
+    data.state.reals["lattice/f"] = {0.1, 1.0 / 3.0, -0.0,
+                                     std::numeric_limits<double>::denorm_min(), 1e300};
     data.state.reals["empty"] = {};
     data.state.integers["dem/pairs"] = {1, -2, std::numeric_limits<std::int64_t>::max()};
     const std::string path = dir.filePath("checkpoint.h5").toStdString();
@@ -38,7 +39,8 @@ void CheckpointFileTest::roundTripIsBitForBit() {
     QCOMPARE(back.state.reals.size(), data.state.reals.size());
     const auto& f = back.state.real("lattice/f");
     QCOMPARE(f.size(), data.state.reals["lattice/f"].size());
-    QVERIFY(std::memcmp(f.data(), data.state.reals["lattice/f"].data(), f.size() * sizeof(double)) == 0);
+    QVERIFY(std::memcmp(f.data(), data.state.reals["lattice/f"].data(),
+                        f.size() * sizeof(double)) == 0);
     QVERIFY(back.state.integer("dem/pairs") == data.state.integers["dem/pairs"]);
     QVERIFY(back.state.real("empty").empty());
 }
@@ -55,7 +57,9 @@ void CheckpointFileTest::replacesAtomically() {
     io::writeCheckpoint(path, second);
     QCOMPARE(QString::fromStdString(io::readCheckpoint(path).case_toml), QString("second"));
     int files = 0;
-    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path().toStdString())) ++files;
+    for ([[maybe_unused]] const auto& entry :
+         std::filesystem::directory_iterator(dir.path().toStdString()))
+        ++files;
     QCOMPARE(files, 1); // no temporary file left behind
 }
 
@@ -64,7 +68,8 @@ void CheckpointFileTest::rejectsTornFile() {
     const std::string path = dir.filePath("torn.h5").toStdString();
     std::ofstream(path) << "not an HDF5 file";
     QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(path), std::runtime_error);
-    QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(dir.filePath("missing.h5").toStdString()), std::runtime_error);
+    QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(dir.filePath("missing.h5").toStdString()),
+                             std::runtime_error);
 }
 
 void CheckpointFileTest::rejectsDamagedArrays() {
@@ -96,9 +101,11 @@ void CheckpointFileTest::rejectsNonFiniteValues() {
     QVERIFY_EXCEPTION_THROWN(io::readCheckpoint(path), solver::InputError);
     // Metrics of the last output may be undefined (NaN) and are kept.
     data.state.reals.erase("dem/x");
-    data.state.reals["run/last_metric/froude_densimetric"] = {std::numeric_limits<double>::quiet_NaN()};
+    data.state.reals["run/last_metric/froude_densimetric"] = {
+        std::numeric_limits<double>::quiet_NaN()};
     io::writeCheckpoint(path, data);
-    QVERIFY(std::isnan(io::readCheckpoint(path).state.real("run/last_metric/froude_densimetric")[0]));
+    QVERIFY(
+        std::isnan(io::readCheckpoint(path).state.real("run/last_metric/froude_densimetric")[0]));
 }
 
 void CheckpointFileTest::timeSeriesRoundTrip() {

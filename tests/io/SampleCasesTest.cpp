@@ -22,7 +22,8 @@ void SampleCasesTest::parsesAndPlans_data() {
     int count = 0;
     while (it.hasNext()) {
         const QString path = it.next();
-        if (path.contains("/studies/") || QFileInfo(path).fileName().startsWith("sweep")) continue; // not case files
+        if (path.contains("/studies/") || QFileInfo(path).fileName().startsWith("sweep"))
+            continue; // not case files
         QTest::newRow(qPrintable(path.mid(root.size() + 1))) << path;
         ++count;
     }

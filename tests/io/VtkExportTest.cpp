@@ -84,13 +84,17 @@ void VtkExportTest::particlesReadBack() {
     QCOMPARE(grid->GetNumberOfPoints(), static_cast<vtkIdType>(expected.grains.size()));
     QCOMPARE(grid->GetNumberOfCells(), static_cast<vtkIdType>(expected.grains.size()));
     vtkPointData* pd = grid->GetPointData();
-    for (const char* name : {"radius", "velocity", "omega", "force", "speed", "contact_force", "hydro_force"})
+    for (const char* name :
+         {"radius", "velocity", "omega", "force", "speed", "contact_force", "hydro_force"})
         QVERIFY2(pd->GetArray(name), name);
     QCOMPARE(pd->GetArray("velocity")->GetNumberOfComponents(), 3);
     const vtkIdType k = 17;
-    QCOMPARE(static_cast<float>(pd->GetArray("radius")->GetComponent(k, 0)), expected.grains.radius[k]);
-    QCOMPARE(static_cast<float>(pd->GetArray("velocity")->GetComponent(k, 1)), expected.grains.vy[k]);
-    QCOMPARE(static_cast<float>(pd->GetArray("omega")->GetComponent(k, 0)), expected.grains.omega[k]);
+    QCOMPARE(static_cast<float>(pd->GetArray("radius")->GetComponent(k, 0)),
+             expected.grains.radius[k]);
+    QCOMPARE(static_cast<float>(pd->GetArray("velocity")->GetComponent(k, 1)),
+             expected.grains.vy[k]);
+    QCOMPARE(static_cast<float>(pd->GetArray("omega")->GetComponent(k, 0)),
+             expected.grains.omega[k]);
     QCOMPARE(static_cast<float>(grid->GetPoint(k)[0]), expected.grains.x[k]);
     QCOMPARE(grid->GetFieldData()->GetArray("TimeValue")->GetComponent(0, 0), expected.time_s);
 }
@@ -103,7 +107,8 @@ void VtkExportTest::contactsReadBack() {
     QVERIFY(cd->GetArray("normal_force") && cd->GetArray("tangential_force"));
     int walls = 0;
     for (vtkIdType k = 0; k < grid->GetNumberOfCells(); ++k) {
-        QCOMPARE(static_cast<float>(cd->GetArray("normal_force")->GetComponent(k, 0)), expected.contacts.normal_force[k]);
+        QCOMPARE(static_cast<float>(cd->GetArray("normal_force")->GetComponent(k, 0)),
+                 expected.contacts.normal_force[k]);
         QCOMPARE(grid->GetCell(k)->GetNumberOfPoints(), vtkIdType(2));
         if (expected.contacts.j[k] >= 0) continue;
         ++walls; // a wall contact ends on its wall point
@@ -127,11 +132,15 @@ void VtkExportTest::fluidReadBack() {
     QCOMPARE(dims[2], 1);
     QCOMPARE(static_cast<float>(image->GetSpacing()[0]), expected.fluid->spacing_m);
     vtkPointData* pd = image->GetPointData();
-    for (const char* name : {"velocity", "pressure", "vorticity", "solid_fraction"}) QVERIFY2(pd->GetArray(name), name);
+    for (const char* name : {"velocity", "pressure", "vorticity", "solid_fraction"})
+        QVERIFY2(pd->GetArray(name), name);
     const vtkIdType k = 30 * expected.fluid->nx + 55; // x fastest, as in SnapshotFluid
-    QCOMPARE(static_cast<float>(pd->GetArray("velocity")->GetComponent(k, 0)), expected.fluid->ux[k]);
-    QCOMPARE(static_cast<float>(pd->GetArray("pressure")->GetComponent(k, 0)), expected.fluid->pressure[k]);
-    QCOMPARE(static_cast<float>(pd->GetArray("vorticity")->GetComponent(k, 0)), expected.fluid->vorticity[k]);
+    QCOMPARE(static_cast<float>(pd->GetArray("velocity")->GetComponent(k, 0)),
+             expected.fluid->ux[k]);
+    QCOMPARE(static_cast<float>(pd->GetArray("pressure")->GetComponent(k, 0)),
+             expected.fluid->pressure[k]);
+    QCOMPARE(static_cast<float>(pd->GetArray("vorticity")->GetComponent(k, 0)),
+             expected.fluid->vorticity[k]);
     QCOMPARE(static_cast<float>(pd->GetArray("solid_fraction")->GetComponent(0, 0)), 0.6f);
 }
 

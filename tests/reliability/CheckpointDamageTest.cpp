@@ -45,11 +45,12 @@ void CheckpointDamageTest::initTestCase() {
     m_run = (fs::path(m_dir.path().toStdString()) / "run").string();
     QProcess process;
     process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(LBDEM_EXECUTABLE, {"run", LBDEM_SOURCE_DIR "/sample_cases/default.toml", "--out",
-                                     QString::fromStdString(m_run), "--quiet", "--until-tc", "0.1", "--set",
-                                     "grains.count=150", "--set", "grains.packing=0.79", "--set",
-                                     "fluid.resolution=4", "--set", "run.end_tc=0.2", "--set", "run.output_interval_tc=0.05",
-                                     "--set", "output.vtk=false"});
+    process.start(LBDEM_EXECUTABLE,
+                  {"run", LBDEM_SOURCE_DIR "/sample_cases/default.toml", "--out",
+                   QString::fromStdString(m_run), "--quiet", "--until-tc", "0.1", "--set",
+                   "grains.count=150", "--set", "grains.packing=0.79", "--set",
+                   "fluid.resolution=4", "--set", "run.end_tc=0.2", "--set",
+                   "run.output_interval_tc=0.05", "--set", "output.vtk=false"});
     QVERIFY(process.waitForFinished(300000));
     QVERIFY2(process.exitCode() == 0, process.readAll().constData());
     QVERIFY(fs::exists(m_run + "/checkpoint.h5"));
@@ -62,9 +63,11 @@ std::string CheckpointDamageTest::copyRun(const QString& name) {
     return copy;
 }
 
-int CheckpointDamageTest::resume(const std::string& dir, QString& message, const QStringList& extra) {
+int CheckpointDamageTest::resume(const std::string& dir, QString& message,
+                                 const QStringList& extra) {
     QProcess process;
-    process.start(LBDEM_EXECUTABLE, QStringList{"resume", QString::fromStdString(dir), "--quiet"} + extra);
+    process.start(LBDEM_EXECUTABLE,
+                  QStringList{"resume", QString::fromStdString(dir), "--quiet"} + extra);
     if (!process.waitForFinished(180000)) {
         process.kill();
         process.waitForFinished();
@@ -91,7 +94,8 @@ void CheckpointDamageTest::randomBytesInLatticeData() {
     // The populations are most of the file: its middle lies in them.
     std::mt19937 random(16);
     std::string bytes(4096, '\0');
-    for (char& byte : bytes) byte = static_cast<char>(random() & 0xff);
+    for (char& byte : bytes)
+        byte = static_cast<char>(random() & 0xff);
     std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
     file.seekp(static_cast<std::streamoff>(size / 2));
     file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -141,7 +145,8 @@ void CheckpointDamageTest::nonFiniteValue() {
 void CheckpointDamageTest::intactCheckpointResumes() {
     const std::string dir = copyRun("intact");
     QString message;
-    QCOMPARE(resume(dir, message, {"--until-tc", "0.11"}), 0); // a few steps: the checkpoint is sound
+    QCOMPARE(resume(dir, message, {"--until-tc", "0.11"}),
+             0); // a few steps: the checkpoint is sound
 }
 
 QTEST_GUILESS_MAIN(CheckpointDamageTest)

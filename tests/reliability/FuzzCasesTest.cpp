@@ -30,22 +30,62 @@ constexpr int kInfoMutants = 300;
 constexpr int kRunMutants = 10;
 constexpr std::uint32_t kSeed = 16;
 
-const std::vector<std::string> kExtremes{
-    "0", "-1", "1e308", "-1e308", "nan", "inf", "-inf", "1e-308", "9223372036854775807", "-9223372036854775808",
-    "\"\"", "\"x\"", "true", "[]", "{}", "[1, \"a\"]", "0x10", "1_000", "\"../../x\"", "2026-12-01", "\"\\u0000\"",
-    "0.5", "1e9", "-0.0", "\"" + std::string(5000, 'a') + "\"", "=", "\"unterminated", "1.", ".5", "+inf"};
+const std::vector<std::string> kExtremes{"0",
+                                         "-1",
+                                         "1e308",
+                                         "-1e308",
+                                         "nan",
+                                         "inf",
+                                         "-inf",
+                                         "1e-308",
+                                         "9223372036854775807",
+                                         "-9223372036854775808",
+                                         "\"\"",
+                                         "\"x\"",
+                                         "true",
+                                         "[]",
+                                         "{}",
+                                         "[1, \"a\"]",
+                                         "0x10",
+                                         "1_000",
+                                         "\"../../x\"",
+                                         "2026-12-01",
+                                         "\"\\u0000\"",
+                                         "0.5",
+                                         "1e9",
+                                         "-0.0",
+                                         "\"" + std::string(5000, 'a') + "\"",
+                                         "=",
+                                         "\"unterminated",
+                                         "1.",
+                                         ".5",
+                                         "+inf"};
 
 /// Run-time keys whose extreme values must not crash or hang a short run (none of them scales
 /// the lattice or the number of grains).
-const std::vector<std::string> kRunKeys{
-    "domain.slope_deg", "domain.top", "domain.right", "fluid.tau", "fluid.collision", "fluid.smagorinsky",
-    "fluid.s_e", "fluid.target_mach", "grains.restitution", "grains.friction_deg", "grains.normal_stiffness_n_m",
-    "grains.tangential_stiffness_n_m", "grains.rolling_resistance", "grains.dt_safety", "coupling.substeps",
-    "coupling.hydro_radius_ratio", "coupling.method", "fluid.density_kg_m3", "fluid.viscosity_m2_s"};
+const std::vector<std::string> kRunKeys{"domain.slope_deg",
+                                        "domain.top",
+                                        "domain.right",
+                                        "fluid.tau",
+                                        "fluid.collision",
+                                        "fluid.smagorinsky",
+                                        "fluid.s_e",
+                                        "fluid.target_mach",
+                                        "grains.restitution",
+                                        "grains.friction_deg",
+                                        "grains.normal_stiffness_n_m",
+                                        "grains.tangential_stiffness_n_m",
+                                        "grains.rolling_resistance",
+                                        "grains.dt_safety",
+                                        "coupling.substeps",
+                                        "coupling.hydro_radius_ratio",
+                                        "coupling.method",
+                                        "fluid.density_kg_m3",
+                                        "fluid.viscosity_m2_s"};
 
 struct Outcome {
-    int code = -1;      ///< exit code; -1 after a signal or a hang
-    QString message;    ///< stderr
+    int code = -1;   ///< exit code; -1 after a signal or a hang
+    QString message; ///< stderr
 };
 
 Outcome runLbdem(const QStringList& arguments, int timeoutMs) {
@@ -63,7 +103,9 @@ Outcome runLbdem(const QStringList& arguments, int timeoutMs) {
     return outcome;
 }
 
-std::size_t pick(std::mt19937& random, std::size_t count) { return count > 0 ? random() % count : 0; }
+std::size_t pick(std::mt19937& random, std::size_t count) {
+    return count > 0 ? random() % count : 0;
+}
 
 /// One random mutation of a case file's lines (or of its bytes).
 std::string mutate(std::vector<std::string> lines, std::mt19937& random) {
@@ -71,34 +113,52 @@ std::string mutate(std::vector<std::string> lines, std::mt19937& random) {
     std::string& text = lines[line];
     const auto equals = text.find('=');
     switch (pick(random, 9)) {
-    case 0: lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(line)); break;
-    case 1: lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(line), text); break;
+    case 0:
+        lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(line));
+        break;
+    case 1:
+        lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(line), text);
+        break;
     case 2:
-        if (equals != std::string::npos) text = text.substr(0, equals + 1) + " " + kExtremes[pick(random, kExtremes.size())];
+        if (equals != std::string::npos)
+            text = text.substr(0, equals + 1) + " " + kExtremes[pick(random, kExtremes.size())];
         break;
     case 3:
-        if (!text.empty()) text[pick(random, text.size())] = static_cast<char>('a' + pick(random, 26));
+        if (!text.empty())
+            text[pick(random, text.size())] = static_cast<char>('a' + pick(random, 26));
         break;
     case 4:
-        for (int k = 0; k < 8 && !text.empty(); ++k) text.insert(pick(random, text.size()), 1, static_cast<char>(random() & 0xff));
+        for (int k = 0; k < 8 && !text.empty(); ++k)
+            text.insert(pick(random, text.size()), 1, static_cast<char>(random() & 0xff));
         break;
     case 5:
         for (char& c : text)
-            if (c == '=' || c == '"' || c == '[' || c == ']') { c = ' '; break; }
+            if (c == '=' || c == '"' || c == '[' || c == ']') {
+                c = ' ';
+                break;
+            }
         break;
-    case 6: text = "[" + text; break;
-    case 7: lines.push_back(pick(random, 2) ? "[nowhere]\nkey = 1" : "grains.count = 150"); break;
-    default: lines.push_back(text); break; // a key repeated at the end (maybe in another section)
+    case 6:
+        text = "[" + text;
+        break;
+    case 7:
+        lines.push_back(pick(random, 2) ? "[nowhere]\nkey = 1" : "grains.count = 150");
+        break;
+    default:
+        lines.push_back(text);
+        break; // a key repeated at the end (maybe in another section)
     }
     std::ostringstream out;
-    for (const auto& l : lines) out << l << "\n";
+    for (const auto& l : lines)
+        out << l << "\n";
     std::string file = out.str();
     if (pick(random, 10) == 0) file.resize(pick(random, file.size())); // truncated
     return file;
 }
 
 std::string write(const QTemporaryDir& dir, int index, const std::string& text) {
-    const std::string path = dir.filePath(QString("mutant_%1.toml").arg(index, 3, 10, QChar('0'))).toStdString();
+    const std::string path =
+        dir.filePath(QString("mutant_%1.toml").arg(index, 3, 10, QChar('0'))).toStdString();
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }
@@ -107,7 +167,8 @@ std::string write(const QTemporaryDir& dir, int index, const std::string& text) 
 
 void FuzzCasesTest::initTestCase() {
     std::ifstream in(LBDEM_SOURCE_DIR "/sample_cases/default.toml");
-    for (std::string line; std::getline(in, line);) m_lines.push_back(line);
+    for (std::string line; std::getline(in, line);)
+        m_lines.push_back(line);
     QVERIFY(m_lines.size() > 10);
 }
 
@@ -117,13 +178,18 @@ void FuzzCasesTest::infoSurvivesMutants() {
     int refused = 0;
     for (int k = 0; k < kInfoMutants; ++k) {
         std::string text = mutate(m_lines, random);
-        if (pick(random, 3) == 0) text = mutate(std::vector<std::string>{text}, random); // a second mutation
+        if (pick(random, 3) == 0)
+            text = mutate(std::vector<std::string>{text}, random); // a second mutation
         const std::string path = write(m_dir, k, text);
         const Outcome outcome = runLbdem({"info", QString::fromStdString(path)}, 20000);
         refused += outcome.code == 2;
-        const bool oneLine = outcome.code != 2 || (outcome.message.count('\n') == 1 && outcome.message.endsWith('\n'));
+        const bool oneLine = outcome.code != 2 ||
+                             (outcome.message.count('\n') == 1 && outcome.message.endsWith('\n'));
         if ((outcome.code != 0 && outcome.code != 2) || !oneLine)
-            failures << QString("%1: exit %2: %3").arg(QString::fromStdString(path)).arg(outcome.code).arg(outcome.message.left(300));
+            failures << QString("%1: exit %2: %3")
+                            .arg(QString::fromStdString(path))
+                            .arg(outcome.code)
+                            .arg(outcome.message.left(300));
     }
     qInfo("%d of %d mutants refused with exit 2, the rest accepted", refused, kInfoMutants);
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
@@ -136,16 +202,18 @@ void FuzzCasesTest::runSurvivesExtremeValues() {
     QStringList failures;
     for (int k = 0; k < kRunMutants; ++k) {
         const std::string key = kRunKeys[pick(random, kRunKeys.size())];
-        const std::string value = kExtremes[pick(random, kExtremes.size() - 6)]; // not the syntax breakers
+        const std::string value =
+            kExtremes[pick(random, kExtremes.size() - 6)]; // not the syntax breakers
         const QString out = m_dir.filePath(QString("run_%1").arg(k));
-        const Outcome outcome =
-            runLbdem({"run", base, "--out", out, "--quiet", "--until-tc", "0.02", "--set", "grains.count=150",
-                      "--set", "grains.packing=0.79", "--set", "fluid.resolution=4", "--set", "output.vtk=false",
-                      "--set", QString::fromStdString(key + "=" + value)},
-                     180000);
+        const Outcome outcome = runLbdem(
+            {"run", base, "--out", out, "--quiet", "--until-tc", "0.02", "--set",
+             "grains.count=150", "--set", "grains.packing=0.79", "--set", "fluid.resolution=4",
+             "--set", "output.vtk=false", "--set", QString::fromStdString(key + "=" + value)},
+            180000);
         if (outcome.code != 0 && outcome.code != 2 && outcome.code != 3)
             failures << QString("%1=%2: exit %3: %4")
-                            .arg(QString::fromStdString(key), QString::fromStdString(value).left(40))
+                            .arg(QString::fromStdString(key),
+                                 QString::fromStdString(value).left(40))
                             .arg(outcome.code)
                             .arg(outcome.message.left(300));
     }

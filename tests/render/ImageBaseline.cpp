@@ -58,8 +58,10 @@ int distinctColours(vtkImageData* image) {
     return static_cast<int>(colours.size());
 }
 
-BaselineResult compareWithBaseline(vtkImageData* actual, const std::string& name, double tolerance) {
-    const std::string baselinePath = std::string(LBDEM_SOURCE_DIR) + "/tests/baselines/" + name + ".png";
+BaselineResult compareWithBaseline(vtkImageData* actual, const std::string& name,
+                                   double tolerance) {
+    const std::string baselinePath =
+        std::string(LBDEM_SOURCE_DIR) + "/tests/baselines/" + name + ".png";
     const std::string outDir = std::string(LBDEM_BINARY_DIR) + "/Testing/Temporary";
     std::filesystem::create_directories(outDir);
     const std::string actualPath = outDir + "/" + name + ".png";

@@ -12,8 +12,8 @@ namespace lbdem::support {
 /// Outcome of comparing a rendered image with tests/baselines/NAME.png.
 struct BaselineResult {
     bool passed = false;
-    double error = 0;       ///< vtkImageDifference's thresholded error
-    std::string message;    ///< why it failed, with the paths of the saved actual and diff images
+    double error = 0;    ///< vtkImageDifference's thresholded error
+    std::string message; ///< why it failed, with the paths of the saved actual and diff images
 };
 
 /// Compares `actual` with tests/baselines/`name`.png using vtkImageDifference; above `tolerance`

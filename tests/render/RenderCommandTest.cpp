@@ -40,7 +40,8 @@ void RenderCommandTest::initTestCase() {
     support::writeSyntheticRun(m_run.toStdString(), 4);
 }
 
-int RenderCommandTest::lbdem(const QStringList& arguments, QString* output, const QString& display) {
+int RenderCommandTest::lbdem(const QStringList& arguments, QString* output,
+                             const QString& display) {
     QProcess process;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.remove("DISPLAY");
@@ -56,7 +57,8 @@ int RenderCommandTest::lbdem(const QStringList& arguments, QString* output, cons
 void RenderCommandTest::lastFrameWithoutDisplay() {
     const QString png = m_dir.filePath("last.png");
     QString output;
-    QCOMPARE(lbdem({"render", m_run, "--frame", "last", "--png", png, "--size", "400x300"}, &output), 0);
+    QCOMPARE(
+        lbdem({"render", m_run, "--frame", "last", "--png", png, "--size", "400x300"}, &output), 0);
     QVERIFY2(output.contains("frame 3"), qPrintable(output));
     const auto image = support::readPng(png.toStdString());
     QVERIFY(image);
@@ -70,9 +72,9 @@ void RenderCommandTest::lastFrameWithoutDisplay() {
     for (int y = 0; y < dims[1]; ++y)
         for (int x = 0; x < dims[0]; ++x) {
             const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
-            orange += p[0] > 220 && p[1] > 100 && p[1] < 200 && p[2] < 80;   // grain colour map
-            blue += p[2] > 150 && p[0] < 80 && p[1] < 120;                   // force-chain colour map
-            white += p[0] > 250 && p[1] > 250 && p[2] > 250;                 // outline and margins
+            orange += p[0] > 220 && p[1] > 100 && p[1] < 200 && p[2] < 80; // grain colour map
+            blue += p[2] > 150 && p[0] < 80 && p[1] < 120;                 // force-chain colour map
+            white += p[0] > 250 && p[1] > 250 && p[2] > 250;               // outline and margins
         }
     QVERIFY2(orange > 50 && blue > 20 && white > 100,
              qPrintable(QString("orange %1 blue %2 white %3").arg(orange).arg(blue).arg(white)));
@@ -82,14 +84,17 @@ void RenderCommandTest::allFramesIntoFolder() {
     const QString folder = m_dir.filePath("frames");
     QCOMPARE(lbdem({"render", m_run, "--all", "--png", folder, "--size", "200x150", "--quiet"}), 0);
     for (int k = 0; k < 4; ++k)
-        QVERIFY(std::filesystem::exists(folder.toStdString() + "/frame_00000" + std::to_string(k) + ".png"));
+        QVERIFY(std::filesystem::exists(folder.toStdString() + "/frame_00000" + std::to_string(k) +
+                                        ".png"));
 }
 
 void RenderCommandTest::timePicksNearestFrame() {
     QString output;
     const QString png = m_dir.filePath("t.png");
     QCOMPARE(lbdem({"render", m_run, "--time", "0.049", "--png", png, "--size", "200x150",
-                    "--layers", "grains,chains,streamlines", "--field", "vorticity"}, &output), 0);
+                    "--layers", "grains,chains,streamlines", "--field", "vorticity"},
+                   &output),
+             0);
     QVERIFY2(output.contains("frame 2"), qPrintable(output));
 }
 
@@ -98,10 +103,11 @@ void RenderCommandTest::fixedRangesChangeTheImage() {
     // every speed to the low end of the colour maps, so most coloured pixels must differ.
     const QString automatic = m_dir.filePath("auto.png"), fixed = m_dir.filePath("fixed.png");
     QCOMPARE(lbdem({"render", m_run, "--png", automatic, "--size", "900x600", "--quiet"}), 0);
-    QCOMPARE(lbdem({"render", m_run, "--png", fixed, "--size", "900x600", "--quiet", "--fluid-range", "0,1000",
-                    "--grain-range", "0,1000"}),
+    QCOMPARE(lbdem({"render", m_run, "--png", fixed, "--size", "900x600", "--quiet",
+                    "--fluid-range", "0,1000", "--grain-range", "0,1000"}),
              0);
-    const auto a = support::readPng(automatic.toStdString()), b = support::readPng(fixed.toStdString());
+    const auto a = support::readPng(automatic.toStdString()),
+               b = support::readPng(fixed.toStdString());
     QVERIFY(a && b);
     int dims[3];
     a->GetDimensions(dims);
@@ -112,7 +118,8 @@ void RenderCommandTest::fixedRangesChangeTheImage() {
             const auto* q = static_cast<unsigned char*>(b->GetScalarPointer(x, y, 0));
             differing += p[0] != q[0] || p[1] != q[1] || p[2] != q[2];
         }
-    QVERIFY2(differing > dims[0] * dims[1] / 10, qPrintable(QString("%1 pixels differ").arg(differing)));
+    QVERIFY2(differing > dims[0] * dims[1] / 10,
+             qPrintable(QString("%1 pixels differ").arg(differing)));
 }
 
 void RenderCommandTest::badInputExitsTwo_data() {
@@ -128,7 +135,9 @@ void RenderCommandTest::badInputExitsTwo_data() {
 void RenderCommandTest::badInputExitsTwo() {
     QFETCH(QStringList, arguments);
     QString output;
-    QCOMPARE(lbdem(QStringList{"render", m_run, "--png", m_dir.filePath("bad.png")} + arguments, &output), 2);
+    QCOMPARE(lbdem(QStringList{"render", m_run, "--png", m_dir.filePath("bad.png")} + arguments,
+                   &output),
+             2);
     QVERIFY(!output.contains("terminate"));
     QCOMPARE(lbdem({"render", m_dir.filePath("nowhere"), "--png", m_dir.filePath("bad.png")}), 2);
 }
@@ -136,10 +145,12 @@ void RenderCommandTest::badInputExitsTwo() {
 void RenderCommandTest::staleDisplayFallsBackToXvfb() {
     // A DISPLAY left over from a closed session: VTK would abort; lbdem starts its own Xvfb.
     int unused = 900;
-    while (std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(unused))) ++unused;
+    while (std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(unused)))
+        ++unused;
     const QString png = m_dir.filePath("stale.png");
     QCOMPARE(lbdem({"render", m_run, "--png", png, "--size", "200x150", "--quiet"}, nullptr,
-                   QString(":%1").arg(unused)), 0);
+                   QString(":%1").arg(unused)),
+             0);
     QVERIFY(std::filesystem::exists(png.toStdString()));
 }
 

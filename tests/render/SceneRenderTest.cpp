@@ -1,4 +1,5 @@
-// Render regression: 300x300 images of a synthetic snapshot against baselines (docs/design.md, Style §7).
+// Render regression: 300x300 images of a synthetic snapshot against baselines (docs/design.md,
+// Style §7).
 #include "tests/render/ImageBaseline.h"
 #include "tests/support/SyntheticSnapshot.h"
 #include "ui/vis/ForceChainLayer.h"
@@ -110,7 +111,8 @@ void SceneRenderTest::chartMatchesBaseline() {
         run.x.push_back(t);
         run.y.push_back(0.9 * t * std::exp(-0.5 * t)); // rises past 0.4, then decays
     }
-    const std::string path = std::string(LBDEM_BINARY_DIR) + "/Testing/Temporary/chart_froude.render.png";
+    const std::string path =
+        std::string(LBDEM_BINARY_DIR) + "/Testing/Temporary/chart_froude.render.png";
     QDir().mkpath(QString::fromStdString(std::string(LBDEM_BINARY_DIR) + "/Testing/Temporary"));
     vis::renderLineChart(vis::froudeChart({run}), path, kSize, kSize);
     const auto image = support::readPng(path);
@@ -125,16 +127,19 @@ void SceneRenderTest::sweepChartHasMarkers() {
     vis::ChartSeries wet{"wet dense", {0, 5, 10, 15, 20}, {0.07, 0.08, 0.10, 0.13, 0.17}};
     const vis::ChartSpec spec = vis::runoutVsSlopeChart({dry, wet});
     QVERIFY(spec.series[0].markers && spec.series[1].markers);
-    const std::string path = std::string(LBDEM_BINARY_DIR) + "/Testing/Temporary/chart_runout_slope.render.png";
+    const std::string path =
+        std::string(LBDEM_BINARY_DIR) + "/Testing/Temporary/chart_runout_slope.render.png";
     vis::renderLineChart(spec, path, kSize, kSize);
-    const auto result = support::compareWithBaseline(support::readPng(path), "chart_runout_slope", kTolerance);
+    const auto result =
+        support::compareWithBaseline(support::readPng(path), "chart_runout_slope", kTolerance);
     QVERIFY2(result.passed, result.message.c_str());
 }
 
 void SceneRenderTest::badChartInputIsRejected() {
     vis::ChartSpec spec;
     spec.series.push_back({"bad", {0, 1}, {0}});
-    QVERIFY_EXCEPTION_THROWN(vis::renderLineChart(spec, "unused.png", kSize, kSize), std::invalid_argument);
+    QVERIFY_EXCEPTION_THROWN(vis::renderLineChart(spec, "unused.png", kSize, kSize),
+                             std::invalid_argument);
     QVERIFY_EXCEPTION_THROWN(vis::renderLineChart(vis::ChartSpec{}, "unused.png", kSize, kSize),
                              std::invalid_argument);
 }

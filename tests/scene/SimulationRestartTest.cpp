@@ -1,4 +1,5 @@
-// Checkpoint/restart: 2N steps equal N steps, save, load into a new Simulation, N steps — bit for bit.
+// Checkpoint/restart: 2N steps equal N steps, save, load into a new Simulation, N steps — bit for
+// bit.
 #include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/CaseWriter.h"
@@ -17,10 +18,11 @@ namespace {
 /// submerged, quick enough for the default suite.
 solver::CaseSpec smallColumn(bool submerged, const std::string& method = "bounce_back",
                              const std::string& storage = "double") {
-    return io::parseCase("schema = 1\nname = \"restart\"\n", "restart.toml",
-                         {"grains.count=150", "grains.packing=0.79", "domain.width_m=0.08", "domain.height_m=0.04",
-                          "fluid.enabled=" + std::string(submerged ? "true" : "false"),
-                          "fluid.resolution=4", "coupling.method=" + method, "fluid.storage=" + storage});
+    return io::parseCase(
+        "schema = 1\nname = \"restart\"\n", "restart.toml",
+        {"grains.count=150", "grains.packing=0.79", "domain.width_m=0.08", "domain.height_m=0.04",
+         "fluid.enabled=" + std::string(submerged ? "true" : "false"), "fluid.resolution=4",
+         "coupling.method=" + method, "fluid.storage=" + storage});
 }
 
 bool sameArchive(const solver::StateArchive& a, const solver::StateArchive& b, QString& why) {
@@ -76,10 +78,12 @@ void SimulationRestartTest::restartIsBitForBit() {
     const auto plan = solver::makePlan(spec);
 
     solver::Simulation straight(spec, plan);
-    for (int s = 0; s < 2 * steps; ++s) straight.step();
+    for (int s = 0; s < 2 * steps; ++s)
+        straight.step();
 
     solver::Simulation first(spec, plan);
-    for (int s = 0; s < steps; ++s) first.step();
+    for (int s = 0; s < steps; ++s)
+        first.step();
     QTemporaryDir dir;
     const std::string path = dir.filePath("checkpoint.h5").toStdString();
     io::writeCheckpoint(path, {io::formatCase(spec), first.saveState()});
@@ -89,10 +93,12 @@ void SimulationRestartTest::restartIsBitForBit() {
     solver::Simulation resumed(resumedSpec, solver::makePlan(resumedSpec));
     resumed.restoreState(data.state);
     QCOMPARE(resumed.stepIndex(), static_cast<long long>(steps));
-    for (int s = 0; s < steps; ++s) resumed.step();
+    for (int s = 0; s < steps; ++s)
+        resumed.step();
 
     QString why;
-    QVERIFY2(sameArchive(straight.saveState(), resumed.saveState(), why), qPrintable("differs in " + why));
+    QVERIFY2(sameArchive(straight.saveState(), resumed.saveState(), why),
+             qPrintable("differs in " + why));
     QCOMPARE(resumed.time(), straight.time());
 }
 
@@ -137,7 +143,8 @@ void SimulationRestartTest::storageMismatchIsRefused() {
         resumed.restoreState(state);
         QFAIL("a float-storage checkpoint was restored into double storage");
     } catch (const solver::InputError& error) {
-        QVERIFY2(std::string(error.what()).find("fluid.storage = \"float\"") != std::string::npos, error.what());
+        QVERIFY2(std::string(error.what()).find("fluid.storage = \"float\"") != std::string::npos,
+                 error.what());
     }
 }
 

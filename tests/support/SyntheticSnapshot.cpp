@@ -10,9 +10,9 @@ namespace lbdem::support {
 
 namespace {
 
-constexpr double kWidth = 0.2, kHeight = 0.1;   // domain [m]
-constexpr double kSpacing = 3e-3;               // hexagonal lattice spacing = largest diameter [m]
-constexpr double kColumnHeight = 0.05;          // initial column height [m]
+constexpr double kWidth = 0.2, kHeight = 0.1; // domain [m]
+constexpr double kSpacing = 3e-3;             // hexagonal lattice spacing = largest diameter [m]
+constexpr double kColumnHeight = 0.05;        // initial column height [m]
 constexpr double kPi = 3.14159265358979323846;
 
 /// The x of the granular surface at height y for frame `frame` (spreads and lowers with time).
@@ -26,17 +26,20 @@ void addGrains(solver::Snapshot& s, int frame, std::vector<std::vector<int>>& la
     const double height = kColumnHeight * (1.0 - 0.08 * frame);
     const int rows = static_cast<int>(height / (kSpacing * std::sqrt(3.0) / 2)) + 1;
     const int cols = static_cast<int>(kWidth / kSpacing);
-    lattice.assign(static_cast<std::size_t>(rows), std::vector<int>(static_cast<std::size_t>(cols), -1));
+    lattice.assign(static_cast<std::size_t>(rows),
+                   std::vector<int>(static_cast<std::size_t>(cols), -1));
     auto& g = s.grains;
     for (int row = 0; row < rows; ++row)
         for (int col = 0; col < cols; ++col) {
             const int n = static_cast<int>(g.size());
-            const double r = 0.5 * kSpacing * (0.85 + 0.15 * (0.5 + 0.5 * std::sin(1.7 * (row * cols + col))));
+            const double r =
+                0.5 * kSpacing * (0.85 + 0.15 * (0.5 + 0.5 * std::sin(1.7 * (row * cols + col))));
             const double x = 0.5 * kSpacing + (row % 2) * 0.5 * kSpacing + col * kSpacing;
             const double y = 0.5 * kSpacing + row * kSpacing * std::sqrt(3.0) / 2;
             if (x + r > frontAt(y, frame)) continue;
             lattice[static_cast<std::size_t>(row)][static_cast<std::size_t>(col)] = n;
-            const double speed = 0.15 * (y / kColumnHeight) * (x / frontAt(0, frame)) * (frame + 1) / 4.0;
+            const double speed =
+                0.15 * (y / kColumnHeight) * (x / frontAt(0, frame)) * (frame + 1) / 4.0;
             g.x.push_back(static_cast<float>(x));
             g.y.push_back(static_cast<float>(y));
             g.radius.push_back(static_cast<float>(r));
@@ -73,14 +76,21 @@ void addContacts(solver::Snapshot& s, const std::vector<std::vector<int>>& latti
             if (col + 1 < cols && line[static_cast<std::size_t>(col + 1)] >= 0)
                 addContact(s, i, line[static_cast<std::size_t>(col + 1)], 0, 0);
             if (row + 1 < rows) {
-                // Upper neighbours on a hexagonal lattice: odd rows are shifted half a spacing right.
+                // Upper neighbours on a hexagonal lattice: odd rows are shifted half a spacing
+                // right.
                 const int left = col - 1 + row % 2, right = col + row % 2;
                 for (const int up : {left, right})
-                    if (up >= 0 && up < cols && lattice[static_cast<std::size_t>(row + 1)][static_cast<std::size_t>(up)] >= 0)
-                        addContact(s, i, lattice[static_cast<std::size_t>(row + 1)][static_cast<std::size_t>(up)], 0, 0);
+                    if (up >= 0 && up < cols &&
+                        lattice[static_cast<std::size_t>(row + 1)][static_cast<std::size_t>(up)] >=
+                            0)
+                        addContact(s, i,
+                                   lattice[static_cast<std::size_t>(row + 1)]
+                                          [static_cast<std::size_t>(up)],
+                                   0, 0);
             }
             if (row == 0) addContact(s, i, -1, s.grains.x[static_cast<std::size_t>(i)], 0.0f);
-            if (col == 0 && row % 2 == 0) addContact(s, i, -1, 0.0f, s.grains.y[static_cast<std::size_t>(i)]);
+            if (col == 0 && row % 2 == 0)
+                addContact(s, i, -1, 0.0f, s.grains.y[static_cast<std::size_t>(i)]);
         }
     }
 }
@@ -92,7 +102,8 @@ void addFluid(solver::Snapshot& s, int frame) {
     f.spacing_m = static_cast<float>(kWidth / (f.nx - 1));
     const std::size_t n = static_cast<std::size_t>(f.nx) * f.ny;
     f.ux.resize(n), f.uy.resize(n), f.pressure.resize(n), f.vorticity.resize(n), f.solid.resize(n);
-    // Lamb-Oseen vortex: u_theta = G/(2 pi r) (1 - exp(-r^2/rc^2)), vorticity G/(pi rc^2) exp(-r^2/rc^2).
+    // Lamb-Oseen vortex: u_theta = G/(2 pi r) (1 - exp(-r^2/rc^2)), vorticity G/(pi rc^2)
+    // exp(-r^2/rc^2).
     const double gamma = 0.01, core = 0.015;
     const double cx = frontAt(0, frame) + 0.02, cy = 0.035;
     for (int iy = 0; iy < f.ny; ++iy)
@@ -132,8 +143,10 @@ solver::Snapshot syntheticSnapshot(int frame, bool wet) {
         const double y = height * (1.0 - k / 40.0);
         s.outline.emplace_back(static_cast<float>(frontAt(y - 1e-9, frame)), static_cast<float>(y));
     }
-    s.walls = {{0, 0, static_cast<float>(kWidth), 0}, {0, 0, 0, static_cast<float>(kHeight)},
-               {static_cast<float>(kWidth), 0, static_cast<float>(kWidth), static_cast<float>(kHeight)}};
+    s.walls = {
+        {0, 0, static_cast<float>(kWidth), 0},
+        {0, 0, 0, static_cast<float>(kHeight)},
+        {static_cast<float>(kWidth), 0, static_cast<float>(kWidth), static_cast<float>(kHeight)}};
     s.metrics["runout_m"] = frontAt(0, frame);
     s.metrics["t_over_tc"] = s.timeOverTc();
     return s;
@@ -141,7 +154,8 @@ solver::Snapshot syntheticSnapshot(int frame, bool wet) {
 
 void writeSyntheticRun(const std::string& runDir, int frames, bool wet) {
     vis::VtkRunWriter writer(runDir);
-    for (int frame = 0; frame < frames; ++frame) writer.write(syntheticSnapshot(frame, wet));
+    for (int frame = 0; frame < frames; ++frame)
+        writer.write(syntheticSnapshot(frame, wet));
 }
 
 } // namespace lbdem::support

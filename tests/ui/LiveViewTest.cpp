@@ -4,10 +4,10 @@
 //
 // Regenerating the baseline (after a deliberate change to what the view draws):
 //   LBDEM_UPDATE_BASELINES=1 ctest --test-dir build/release -R lbdem.ui.live_view
-// then look at tests/baselines/studio_live_view.png before committing it (docs/design.md, Style §7). A failing
-// run leaves the image and the difference in build/release/Testing/Temporary/. CTest runs it with
-// OMP_NUM_THREADS=1; LBDEM_ANY_THREADS=1 lifts that check (1, 2 and 4 threads gave identical
-// pixels when the baseline was made).
+// then look at tests/baselines/studio_live_view.png before committing it (docs/design.md, Style
+// §7). A failing run leaves the image and the difference in build/release/Testing/Temporary/. CTest
+// runs it with OMP_NUM_THREADS=1; LBDEM_ANY_THREADS=1 lifts that check (1, 2 and 4 threads gave
+// identical pixels when the baseline was made).
 //
 // The column is read from the committed packing in tests/data/packing_cache/ rather than
 // generated: the deposition that generates it is chaotic, so a processor with other vector
@@ -109,7 +109,8 @@ private slots:
         qputenv("LBDEM_CACHE_DIR", m_cache.path().toUtf8());
         QApplication::setOrganizationName("lbdem-test-live-view");
         // The image must not depend on how the solver's loops were split between threads.
-        QVERIFY2(qgetenv("OMP_NUM_THREADS") == "1" || qEnvironmentVariableIsSet("LBDEM_ANY_THREADS"),
+        QVERIFY2(qgetenv("OMP_NUM_THREADS") == "1" ||
+                     qEnvironmentVariableIsSet("LBDEM_ANY_THREADS"),
                  "run with OMP_NUM_THREADS=1 (CTest sets it)");
     }
 
@@ -194,9 +195,12 @@ private slots:
             if (known.contains(name)) continue;
             if (qEnvironmentVariableIsSet("LBDEM_UPDATE_BASELINES"))
                 QFile::copy(cache.filePath(name), committed.filePath(name));
-            QFAIL(qPrintable("the small case's packing is not the committed one (case or generator changed): "
-                             "commit the new " + name + " into tests/data/packing_cache/ with a new "
-                             "baseline (see the head of tests/ui/LiveViewTest.cpp)"));
+            QFAIL(qPrintable(
+                "the small case's packing is not the committed one (case or generator changed): "
+                "commit the new " +
+                name +
+                " into tests/data/packing_cache/ with a new "
+                "baseline (see the head of tests/ui/LiveViewTest.cpp)"));
         }
     }
 

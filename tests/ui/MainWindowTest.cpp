@@ -1,11 +1,11 @@
 // The studio window: an invalid field shows its error and disables Run, the live view is not
 // blank after a run, the event loop stays responsive during a run, and closing mid-run joins.
+#include "ui/studio/MainWindow.h"
 #include "tests/ui/StudioTestCase.h"
 #include "ui/studio/CaseEditor.h"
 #include "ui/studio/CaseFiles.h"
 #include "ui/studio/LivePlots.h"
 #include "ui/studio/LiveView.h"
-#include "ui/studio/MainWindow.h"
 #include "ui/studio/SimulationController.h"
 #include "ui/studio/WindowGrab.h"
 #include "ui/vis/OffscreenRenderer.h"
@@ -13,8 +13,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
-#include <QFileInfo>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
@@ -71,10 +71,18 @@ private slots:
         QTest::addColumn<QString>("path");
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("not a number") << "grains.count" << "many" << "expected a whole number";
-        QTest::newRow("fraction") << "grains.count" << "10.5" << "expected a whole number";
-        QTest::newRow("out of range") << "domain.slope_deg" << "60" << "out of range";
-        QTest::newRow("not a real") << "fluid.tau" << "0.5o6" << "expected a number";
+        QTest::newRow("not a number") << "grains.count"
+                                      << "many"
+                                      << "expected a whole number";
+        QTest::newRow("fraction") << "grains.count"
+                                  << "10.5"
+                                  << "expected a whole number";
+        QTest::newRow("out of range") << "domain.slope_deg"
+                                      << "60"
+                                      << "out of range";
+        QTest::newRow("not a real") << "fluid.tau"
+                                    << "0.5o6"
+                                    << "expected a number";
     }
 
     void invalidFieldDisablesRun() {
@@ -134,7 +142,8 @@ private slots:
         // The live view draws what the headless renderer draws (the render tests' baselines
         // cover that one): render the same snapshot off screen at the view's size and compare.
         const QSize size = view.size();
-        const QString headlessPath = QDir(LBDEM_BINARY_DIR).filePath("Testing/Temporary/studio_headless.png");
+        const QString headlessPath =
+            QDir(LBDEM_BINARY_DIR).filePath("Testing/Temporary/studio_headless.png");
         QDir().mkpath(QFileInfo(headlessPath).absolutePath());
         lbdem::vis::renderSnapshotPng(*window.shownSnapshot(), headlessPath.toStdString(),
                                       size.width(), size.height(), window.liveView().layers());
@@ -200,8 +209,8 @@ private slots:
         // width (the layout may settle) does not move it.
         auto offCentre = [&] { return view.worldAt(gl->width() / 2 - 100, gl->height() / 2 - 50); };
         const auto corner = offCentre();
-        QWheelEvent wheel(QPointF(centre), QPointF(gl->mapToGlobal(centre)), QPoint(), QPoint(0, 120),
-                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QWheelEvent wheel(QPointF(centre), QPointF(gl->mapToGlobal(centre)), QPoint(),
+                          QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
         QApplication::sendEvent(gl, &wheel);
         QTest::qWait(50);
         const auto zoomed = offCentre();

@@ -1,7 +1,7 @@
 // The solver thread: snapshots arrive, frames are skipped not queued, pause stops them, reset
 // and step work, and shutdown joins the thread (docs/design.md, Style §3, §7).
-#include "tests/ui/StudioTestCase.h"
 #include "ui/studio/SimulationController.h"
+#include "tests/ui/StudioTestCase.h"
 #include "ui/studio/SimulationWorker.h"
 
 #include <QElapsedTimer>
@@ -53,7 +53,8 @@ private slots:
         QElapsedTimer pausing;
         pausing.start();
         controller.pause();
-        while (controller.state() != RunState::Paused) QVERIFY(states.wait(5000));
+        while (controller.state() != RunState::Paused)
+            QVERIFY(states.wait(5000));
         qInfo("pause took effect after %lld ms (one batch is about %d ms of stepping)",
               static_cast<long long>(pausing.elapsed()), lbdem::studio::SimulationWorker::kBatchMs);
         QTest::qWait(200); // the final frame of the pause may still be on its way
@@ -95,9 +96,8 @@ private slots:
         QVERIFY(snapshots.wait(20000));
         controller.run();
         // Nobody releases the first frame: the worker keeps stepping but sends nothing more.
-        QTRY_VERIFY_WITH_TIMEOUT(!progress.isEmpty() &&
-                                     progress.last().at(0).value<RunProgress>().step > 5,
-                                 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !progress.isEmpty() && progress.last().at(0).value<RunProgress>().step > 5, 20000);
         QCOMPARE(snapshots.count(), 1);
         controller.releaseFrame();
         QVERIFY(snapshots.wait(20000));
@@ -125,7 +125,8 @@ private slots:
         releaseEach(controller);
         QSignalSpy completed(&controller, &SimulationController::runCompleted);
         // An end time of a few steps: the counted run must still report its completion.
-        controller.load(lbdem::studio::test::smallCase({"run.end_tc=0.001", "run.output_interval_tc=0.001"}));
+        controller.load(
+            lbdem::studio::test::smallCase({"run.end_tc=0.001", "run.output_interval_tc=0.001"}));
         controller.run(1000000);
         QVERIFY(completed.wait(30000));
         QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Finished, 5000);

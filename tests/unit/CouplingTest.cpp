@@ -5,9 +5,9 @@
 
 #include <QElapsedTimer>
 #include <QtTest>
-#include <omp.h>
 #include <algorithm>
 #include <cmath>
+#include <omp.h>
 #include <random>
 
 using namespace lbdem::solver;
@@ -37,7 +37,8 @@ coupling::CouplingParams latticeUnits(CouplingMethod method) {
 
 /// Total momentum of the fluid: over every cell, weighted by (1 - solid fraction) for bounce-back
 /// (solid nodes are not fluid) and over all cells for PSM (a cell's populations are its fluid).
-void fluidMomentum(const lattice::Lattice& lat, const coupling::Coupling& link, double& jx, double& jy) {
+void fluidMomentum(const lattice::Lattice& lat, const coupling::Coupling& link, double& jx,
+                   double& jy) {
     const bool psm = link.params().method == CouplingMethod::Psm;
     jx = jy = 0;
     for (long long c = 0; c < lat.cells(); ++c) {
@@ -70,8 +71,8 @@ private slots:
 
 void CouplingTest::cellFractionInsideOutsideHalf() {
     using coupling::cellSolidFraction;
-    QCOMPARE(cellSolidFraction(0, 0, 5, 0.5, 0.5), 1.0);           // fully inside
-    QCOMPARE(cellSolidFraction(0, 0, 5, 10.0, 0.5), 0.0);          // fully outside
+    QCOMPARE(cellSolidFraction(0, 0, 5, 0.5, 0.5), 1.0);  // fully inside
+    QCOMPARE(cellSolidFraction(0, 0, 5, 10.0, 0.5), 0.0); // fully outside
     // A huge disc whose edge runs through the cell centre covers half of it (curvature ~ 1/(12 R)).
     const double big = 1e4;
     QVERIFY(std::abs(cellSolidFraction(0.5, 0.5 - big, big, 0.5, 0.5) - 0.5) < 1e-4);
@@ -82,8 +83,8 @@ void CouplingTest::cellFractionInsideOutsideHalf() {
 
 void CouplingTest::overlapMatchesClosedForms() {
     using coupling::discRectangleOverlap;
-    QVERIFY(std::abs(discRectangleOverlap(0, 0, 1, -1, 0, 1, 1) - kPi / 2) < 1e-12);  // half disc
-    QVERIFY(std::abs(discRectangleOverlap(0, 0, 1, 0, 0, 2, 2) - kPi / 4) < 1e-12);   // quadrant
+    QVERIFY(std::abs(discRectangleOverlap(0, 0, 1, -1, 0, 1, 1) - kPi / 2) < 1e-12); // half disc
+    QVERIFY(std::abs(discRectangleOverlap(0, 0, 1, 0, 0, 2, 2) - kPi / 4) < 1e-12);  // quadrant
     QVERIFY(std::abs(discRectangleOverlap(3, 4, 2, -10, -10, 10, 10) - 4 * kPi) < 1e-12);
     // Circular segment of height r/2: r^2 acos(1/2) - (r/2) sqrt(r^2 - r^2/4).
     const double seg = std::acos(0.5) - 0.5 * std::sqrt(0.75);
@@ -110,7 +111,8 @@ void CouplingTest::cellFractionsPartitionTheDisc() {
     const double cx = 10.37, cy = 9.81, r = 4.6;
     double total = 0;
     for (int j = 0; j < 25; ++j)
-        for (int i = 0; i < 25; ++i) total += coupling::cellSolidFraction(cx, cy, r, i + 0.5, j + 0.5);
+        for (int i = 0; i < 25; ++i)
+            total += coupling::cellSolidFraction(cx, cy, r, i + 0.5, j + 0.5);
     QVERIFY(std::abs(total - kPi * r * r) < 1e-10);
 }
 
@@ -128,7 +130,11 @@ void CouplingTest::galileanInvariance() {
     const double u = 0.05, radius = 6;
     auto meanForce = [&](double fluidVelocity) {
         lattice::Lattice lat(periodicBox(48));
-        lat.initialise([&](double, double, double& rho, double& ux, double& uy) { rho = 1; ux = fluidVelocity; uy = 0; });
+        lat.initialise([&](double, double, double& rho, double& ux, double& uy) {
+            rho = 1;
+            ux = fluidVelocity;
+            uy = 0;
+        });
         dem::DemSystem dem;
         dem.addDisc(20.3, 24.1, radius);
         dem.particles().vx[0] = u;
@@ -150,10 +156,13 @@ void CouplingTest::galileanInvariance() {
     const double comoving = meanForce(u), drag = meanForce(0);
     qInfo("mean |F| co-moving %.3g, drag %.3g (lattice units)", comoving, drag);
     QVERIFY2(drag > 1e-3, qPrintable(QString("drag %1").arg(drag)));
-    QVERIFY2(comoving < 1e-6 * drag, qPrintable(QString("co-moving %1, drag %2").arg(comoving).arg(drag)));
+    QVERIFY2(comoving < 1e-6 * drag,
+             qPrintable(QString("co-moving %1, drag %2").arg(comoving).arg(drag)));
 }
 
-void CouplingTest::momentumConservation_data() { galileanInvariance_data(); }
+void CouplingTest::momentumConservation_data() {
+    galileanInvariance_data();
+}
 
 void CouplingTest::momentumConservation() {
     // Fixed disc in a periodic stream: over each step the fluid loses exactly the momentum the
@@ -179,7 +188,11 @@ void CouplingTest::momentumConservation() {
         QVERIFY(std::abs(load.fx) > 1e-4);
         QVERIFY2(std::abs((jx1 - jx0) + load.fx) < 1e-10 && std::abs((jy1 - jy0) + load.fy) < 1e-10,
                  qPrintable(QString("step %1: dJ = (%2, %3), F = (%4, %5)")
-                                .arg(step).arg(jx1 - jx0).arg(jy1 - jy0).arg(load.fx).arg(load.fy)));
+                                .arg(step)
+                                .arg(jx1 - jx0)
+                                .arg(jy1 - jy0)
+                                .arg(load.fx)
+                                .arg(load.fy)));
     }
 }
 
@@ -187,7 +200,11 @@ void CouplingTest::loadsReachDemInSi() {
     // F [N/m] = F_lat rho_f h^3 / dt^2, T [N] = T_lat rho_f h^4 / dt^2; ext loads are replaced and
     // the stored totals follow them.
     lattice::Lattice lat(periodicBox(32));
-    lat.initialise([](double, double y, double& rho, double& ux, double& uy) { rho = 1; ux = 0.02 * std::sin(2 * kPi * y / 32); uy = 0; });
+    lat.initialise([](double, double y, double& rho, double& ux, double& uy) {
+        rho = 1;
+        ux = 0.02 * std::sin(2 * kPi * y / 32);
+        uy = 0;
+    });
     dem::DemSystem dem;
     coupling::CouplingParams p = latticeUnits(CouplingMethod::BounceBack);
     p.h = 1e-4;
@@ -213,7 +230,8 @@ void CouplingTest::loadsReachDemInSi() {
     QVERIFY(l.fx != before.fx);
     QVERIFY(std::abs(g.ext_fx[0] - fx) <= 1e-12 * std::abs(fx));
     QVERIFY(std::abs(g.ext_torque[0] - torque) <= 1e-12 * std::abs(torque) + 1e-300);
-    QVERIFY(std::abs(g.fx[0] - g.ext_fx[0]) < 1e-12); // no gravity, no contacts: total = hydrodynamic
+    QVERIFY(std::abs(g.fx[0] - g.ext_fx[0]) <
+            1e-12); // no gravity, no contacts: total = hydrodynamic
 }
 
 void CouplingTest::restartIsBitForBit() {
@@ -310,8 +328,9 @@ void CouplingTest::cornerGrainStaysBounded() {
         }
         const auto& grain = dem.particles();
         worstV = std::max(worstV, std::hypot(grain.vx[0], grain.vy[0]) * dt / h);
-        QVERIFY2(std::isfinite(worstU) && worstU < 0.05,
-                 qPrintable(QString("step %1: fluid speed %2 (lattice units)").arg(step).arg(worstU)));
+        QVERIFY2(
+            std::isfinite(worstU) && worstU < 0.05,
+            qPrintable(QString("step %1: fluid speed %2 (lattice units)").arg(step).arg(worstU)));
     }
     const auto& grain = dem.particles();
     qInfo("largest fluid speed %.3g, grain speed %.3g (lattice units)", worstU, worstV);
@@ -335,7 +354,8 @@ void CouplingTest::threadCountDoesNotMatter() {
         });
         dem::DemSystem dem;
         for (int k = 0; k < 120; ++k) {
-            const std::size_t p = dem.addDisc(20.3 + 25.1 * (k % 12), 14.7 + 30.2 * (k / 12), 8.4 + 0.1 * (k % 5));
+            const std::size_t p =
+                dem.addDisc(20.3 + 25.1 * (k % 12), 14.7 + 30.2 * (k / 12), 8.4 + 0.1 * (k % 5));
             dem.particles().vx[p] = 0.05 * std::sin(k);
             dem.particles().vy[p] = 0.05 * std::cos(3 * k);
             dem.particles().omega[p] = 0.002 * (k % 3 - 1);
@@ -374,7 +394,8 @@ void CouplingTest::farGrainsScanNoFurtherThanTheLattice() {
     // no longer than for grains inside, and nothing outside is covered.
     for (bool periodic : {false, true}) {
         lattice::LatticeSetup s = periodicBox(60);
-        if (!periodic) s.left.type = s.right.type = s.bottom.type = s.top.type = lattice::SideType::Wall;
+        if (!periodic)
+            s.left.type = s.right.type = s.bottom.type = s.top.type = lattice::SideType::Wall;
         lattice::Lattice lat(s);
         dem::DemSystem dem;
         dem.addDisc(30.2, 30.7, 6.5);
@@ -397,7 +418,8 @@ void CouplingTest::farGrainsScanNoFurtherThanTheLattice() {
         }
         QVERIFY2(clock.elapsed() < 2000, qPrintable(QString("%1 ms").arg(clock.elapsed())));
         long long covered = 0;
-        for (std::int32_t owner : link.owners()) covered += owner >= 0;
+        for (std::int32_t owner : link.owners())
+            covered += owner >= 0;
         if (!periodic) QCOMPARE(covered, 0LL); // all three grains left the walled lattice
         QVERIFY(covered < lat.cells());
     }

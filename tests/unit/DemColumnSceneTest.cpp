@@ -43,10 +43,12 @@ void DemColumnSceneTest::columnCollapsesPastGate() {
     QVERIFY(!scene.system().walls()[scene.gateWall()].active);
     QVERIFY(std::abs(scene.packing().fraction - 0.82) <= 0.005);
     const double tc = std::sqrt(scene.initialHeight() / spec.domain.gravity_m_s2);
-    while (scene.time() < 1.5 * tc) scene.step();
+    while (scene.time() < 1.5 * tc)
+        scene.step();
     const auto& p = scene.system().particles();
     double front = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) front = std::max(front, p.x[i] + p.radius[i]);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        front = std::max(front, p.x[i] + p.radius[i]);
     QVERIFY(front > scene.initialWidth() + spec.grains.d_min_m);
 
     Snapshot snapshot;
@@ -56,12 +58,14 @@ void DemColumnSceneTest::columnCollapsesPastGate() {
     QVERIFY(snapshot.contacts.size() > 0);
     for (std::size_t k = 0; k < snapshot.contacts.size(); ++k) {
         QVERIFY(snapshot.contacts.i[k] >= 0 && snapshot.contacts.i[k] < static_cast<int>(p.size()));
-        QVERIFY(snapshot.contacts.j[k] >= -1 && snapshot.contacts.j[k] < static_cast<int>(p.size()));
+        QVERIFY(snapshot.contacts.j[k] >= -1 &&
+                snapshot.contacts.j[k] < static_cast<int>(p.size()));
     }
     QCOMPARE(snapshot.walls.size(), std::size_t(3)); // floor, left and right; the gate is gone
     bool wallContact = false;
     for (std::size_t k = 0; k < snapshot.contacts.size(); ++k)
-        if (snapshot.contacts.j[k] == -1) wallContact = wallContact || std::abs(snapshot.contacts.wy[k]) < 1e-6f;
+        if (snapshot.contacts.j[k] == -1)
+            wallContact = wallContact || std::abs(snapshot.contacts.wy[k]) < 1e-6f;
     QVERIFY(wallContact);
 }
 

@@ -63,7 +63,8 @@ void DemContactTest::tangentialForceIsCappedByCoulomb() {
     const auto contacts = s.contacts();
     QCOMPARE(contacts.size(), std::size_t(1));
     QVERIFY(contacts[0].fn > 0);
-    QVERIFY(std::abs(std::abs(contacts[0].ft) - m.friction * contacts[0].fn) < 1e-9 * contacts[0].fn);
+    QVERIFY(std::abs(std::abs(contacts[0].ft) - m.friction * contacts[0].fn) <
+            1e-9 * contacts[0].fn);
     // The friction opposes the sliding of disc 1 (upwards).
     QVERIFY(s.particles().fy[1] < 0);
 }
@@ -80,7 +81,8 @@ void DemContactTest::elasticCollisionConservesEnergy() {
     s.computeForces();
     const Real before = s.kineticEnergy();
     const Real dt = 0.02 * contactDuration(m.normal_stiffness, discMass(kR, m.density) / 2, 1.0);
-    for (int k = 0; k < 1000; ++k) s.step(dt);
+    for (int k = 0; k < 1000; ++k)
+        s.step(dt);
     QVERIFY(s.contacts().empty());
     // No dashpot and no friction: energy changes only by the O(dt^2) integration error.
     QVERIFY2(std::abs(s.kineticEnergy() - before) < 1e-4 * before,
@@ -134,7 +136,8 @@ DemSystem pile(int threads) {
     std::uniform_real_distribution<Real> jitter(-1e-4, 1e-4);
     for (int row = 0; row < 6; ++row)
         for (int col = 0; col < 8; ++col)
-            s.addDisc(1.2e-3 + col * 2.3e-3 + jitter(rng), 1.2e-3 + row * 2.3e-3, kR * (1 + 0.5 * (col % 3) / 2.0));
+            s.addDisc(1.2e-3 + col * 2.3e-3 + jitter(rng), 1.2e-3 + row * 2.3e-3,
+                      kR * (1 + 0.5 * (col % 3) / 2.0));
     s.setGravity(Vec2(1.0, -9.81));
     s.computeForces();
     return s;
@@ -152,17 +155,20 @@ void DemContactTest::restartIsBitForBit() {
     const Real dt = 2e-6;
     const int n = 10000;
     DemSystem straight = pile(threads);
-    for (int k = 0; k < 2 * n; ++k) straight.step(dt);
+    for (int k = 0; k < 2 * n; ++k)
+        straight.step(dt);
 
     DemSystem first = pile(threads);
-    for (int k = 0; k < n; ++k) first.step(dt);
+    for (int k = 0; k < n; ++k)
+        first.step(dt);
     // "Checkpoint": particle arrays, contact history and clock into a fresh system.
     DemSystem resumed = pile(threads);
     resumed.particles() = first.particles();
     resumed.restoreContactHistory(first.contactHistory());
     resumed.setClock(first.time(), first.stepCount());
     resumed.invalidateNeighbours();
-    for (int k = 0; k < n; ++k) resumed.step(dt);
+    for (int k = 0; k < n; ++k)
+        resumed.step(dt);
 
     QVERIFY(!straight.contacts().empty());
     QCOMPARE(resumed.stepCount(), straight.stepCount());
@@ -218,11 +224,13 @@ void DemContactTest::loneDiscComesToRestOnFrictionalFloor() {
     s.particles().omega[0] = -v / kR;
     s.computeForces();
     const Real dt = 2e-6;
-    for (int k = 0; k < 250000; ++k) s.step(dt); // 0.5 s
+    for (int k = 0; k < 250000; ++k)
+        s.step(dt); // 0.5 s
     const Real speed = std::abs(s.particles().vx[0]);
     if (stops)
-        QVERIFY2(speed < 1e-4 && std::abs(s.particles().x[0]) < v * v / (2 * 0.3),
-                 qPrintable(QString("speed %1 m/s at x = %2 m").arg(speed).arg(s.particles().x[0])));
+        QVERIFY2(
+            speed < 1e-4 && std::abs(s.particles().x[0]) < v * v / (2 * 0.3),
+            qPrintable(QString("speed %1 m/s at x = %2 m").arg(speed).arg(s.particles().x[0])));
     else
         QVERIFY2(speed > v, qPrintable(QString("speed %1 m/s").arg(speed)));
 }
@@ -239,7 +247,8 @@ void DemContactTest::contactsWithoutTorqueDoNotTurnDiscs() {
         s.addDisc(2 * kR - 1e-6, 0, kR);
         s.particles().vy[1] = 0.01;
         s.computeForces();
-        for (int k = 0; k < 10; ++k) s.step(1e-7);
+        for (int k = 0; k < 10; ++k)
+            s.step(1e-7);
         QCOMPARE(s.particles().omega[0] != 0, torque);
         QVERIFY(s.particles().fy[0] != 0); // the tangential force acts either way
     }

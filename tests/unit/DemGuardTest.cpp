@@ -1,7 +1,7 @@
 // The DEM's stability guard and the restore-time grain checks: an unstable DEM stops with a
 // diagnosis naming the DEM instead of crashing; impossible restored grains are refused.
-#include "solver/core/InputError.h"
 #include "solver/dem/DemGuard.h"
+#include "solver/core/InputError.h"
 #include "solver/scene/ColumnScene.h"
 
 #include <QTemporaryDir>
@@ -56,7 +56,8 @@ void DemGuardTest::nonFiniteGrainStops() {
         QFAIL("a NaN velocity must stop the run");
     } catch (const SimulationError& error) {
         const std::string what = error.what();
-        QVERIFY2(what.find("DEM") != std::string::npos && what.find("grain 1") != std::string::npos, error.what());
+        QVERIFY2(what.find("DEM") != std::string::npos && what.find("grain 1") != std::string::npos,
+                 error.what());
     }
 }
 
@@ -83,10 +84,12 @@ void DemGuardTest::unstableColumnStopsNamingTheDem() {
     plan.dem_dt_s = 30 * plan.dem_dt_stable_s;
     ColumnScene scene(spec, plan, options);
     try {
-        for (int k = 0; k < 100000; ++k) scene.step();
+        for (int k = 0; k < 100000; ++k)
+            scene.step();
         QFAIL("the unstable DEM was not stopped");
     } catch (const SimulationError& error) {
-        QVERIFY2(std::string(error.what()).find("the DEM became unstable") != std::string::npos, error.what());
+        QVERIFY2(std::string(error.what()).find("the DEM became unstable") != std::string::npos,
+                 error.what());
     }
 }
 

@@ -40,7 +40,8 @@ void DemPackingTest::sameSeedSamePacking() {
     QCOMPARE(a.y, b.y);
     QCOMPARE(a.radius, b.radius);
     QVERIFY(a.radius != c.radius);
-    for (double r : a.radius) QVERIFY(r >= 0.6e-3 && r <= 1.08e-3);
+    for (double r : a.radius)
+        QVERIFY(r >= 0.6e-3 && r <= 1.08e-3);
     // Every disc inside the walls (within the contact overlap).
     for (std::size_t k = 0; k < a.x.size(); ++k) {
         QVERIFY(a.x[k] - a.radius[k] > -1e-5 && a.x[k] + a.radius[k] < a.width + 1e-5);

@@ -25,13 +25,15 @@ CollisionParams columnCollision() {
 
 // Density excess at one node after each of `steps` steps, the layer (if any) applied after each.
 template <class Init>
-std::vector<double> probeSeries(const LatticeSetup& setup, const std::optional<AbsorbingLayerSetup>& layerSetup,
+std::vector<double> probeSeries(const LatticeSetup& setup,
+                                const std::optional<AbsorbingLayerSetup>& layerSetup,
                                 const Init& init, int probeX, int probeY, int steps) {
     Lattice lattice(setup);
     lattice.initialise(init);
     std::optional<AbsorbingLayer> layer;
     if (layerSetup) layer.emplace(lattice, *layerSetup);
-    const long long probe = lattice.index(lattice.firstFluidX() + probeX, lattice.firstFluidY() + probeY);
+    const long long probe =
+        lattice.index(lattice.firstFluidX() + probeX, lattice.firstFluidY() + probeY);
     std::vector<double> series;
     for (int s = 0; s < steps; ++s) {
         lattice.step();
@@ -43,7 +45,8 @@ std::vector<double> probeSeries(const LatticeSetup& setup, const std::optional<A
 
 double maxAbs(const std::vector<double>& v, std::size_t from, std::size_t to) {
     double m = 0;
-    for (std::size_t k = from; k < std::min(to, v.size()); ++k) m = std::max(m, std::abs(v[k]));
+    for (std::size_t k = from; k < std::min(to, v.size()); ++k)
+        m = std::max(m, std::abs(v[k]));
     return m;
 }
 
@@ -119,11 +122,12 @@ void LatticeAbsorbingLayerTest::planeWaveLeavesTheOpenSide() {
     const double incident = maxAbs(open, 0, atSide);
     const double reflectedOpen = maxAbs(open, atSide, open.size()) / incident;
     const double reflectedLayer = maxAbs(absorbed, atSide, absorbed.size()) / incident;
-    qInfo("plane wave: incident %.3g, reflected %.4f (pressure side alone), %.5f (with the layer)", incident,
-          reflectedOpen, reflectedLayer);
+    qInfo("plane wave: incident %.3g, reflected %.4f (pressure side alone), %.5f (with the layer)",
+          incident, reflectedOpen, reflectedLayer);
     QVERIFY(std::abs(incident - amplitude) < 0.1 * amplitude); // the probe saw the pulse go by
     QVERIFY2(reflectedOpen > 0.5, "the probe must see the echo of the bare pressure side");
-    QVERIFY2(reflectedLayer < 0.05, qPrintable(QString("reflected %1 of the incident").arg(reflectedLayer)));
+    QVERIFY2(reflectedLayer < 0.05,
+             qPrintable(QString("reflected %1 of the incident").arg(reflectedLayer)));
 }
 
 void LatticeAbsorbingLayerTest::circularPulseLeavesTheOpenCorner() {
@@ -159,10 +163,12 @@ void LatticeAbsorbingLayerTest::circularPulseLeavesTheOpenCorner() {
         errorOpen = std::max(errorOpen, std::abs(open[s] - reference[s]) / incident);
         errorLayer = std::max(errorLayer, std::abs(absorbed[s] - reference[s]) / incident);
     }
-    qInfo("circular pulse: incident %.3g, reflected %.4f (pressure sides alone), %.5f (with the layer)", incident,
-          errorOpen, errorLayer);
+    qInfo("circular pulse: incident %.3g, reflected %.4f (pressure sides alone), %.5f (with the "
+          "layer)",
+          incident, errorOpen, errorLayer);
     QVERIFY2(errorOpen > 0.3, "the probe must see the echo of the bare pressure sides");
-    QVERIFY2(errorLayer < 0.05, qPrintable(QString("reflected %1 of the incident").arg(errorLayer)));
+    QVERIFY2(errorLayer < 0.05,
+             qPrintable(QString("reflected %1 of the incident").arg(errorLayer)));
 }
 
 QTEST_APPLESS_MAIN(LatticeAbsorbingLayerTest)

@@ -55,11 +55,15 @@ void LatticeBoundaryTest::couetteBounceBackAndMovingWall() {
     setup.collision.model = static_cast<CollisionModel>(model);
     setup.collision.tau = 1.0;
     Lattice lattice(setup);
-    for (int s = 0; s < 6000; ++s) lattice.step();
+    for (int s = 0; s < 6000; ++s)
+        lattice.step();
     for (int j = 0; j < setup.ny; ++j) {
         const double y = j + 0.5, exact = 0.05 * y / setup.ny;
         QVERIFY2(std::abs(meanUx(lattice, lattice.firstFluidY() + j) - exact) < 1e-6,
-                 qPrintable(QString("row %1: %2 vs %3").arg(j).arg(meanUx(lattice, lattice.firstFluidY() + j) - exact).arg(exact)));
+                 qPrintable(QString("row %1: %2 vs %3")
+                                .arg(j)
+                                .arg(meanUx(lattice, lattice.firstFluidY() + j) - exact)
+                                .arg(exact)));
     }
 }
 
@@ -87,7 +91,8 @@ void LatticeBoundaryTest::periodicConservesMomentum() {
     };
     double px0, py0, px1, py1;
     momentum(px0, py0);
-    for (int s = 0; s < 500; ++s) lattice.step();
+    for (int s = 0; s < 500; ++s)
+        lattice.step();
     momentum(px1, py1);
     QVERIFY(std::abs(px1 - px0) < 1e-11 * std::abs(px0));
     QVERIFY(std::abs(py1 - py0) < 1e-11 * std::abs(py0));
@@ -102,8 +107,13 @@ void LatticeBoundaryTest::freeSlipKeepsPlugFlow() {
     setup.bottom.type = setup.top.type = SideType::FreeSlip;
     setup.collision.model = CollisionModel::Mrt;
     Lattice lattice(setup);
-    lattice.initialise([](double, double, double& rho, double& ux, double& uy) { rho = 1; ux = 0.05; uy = 0; });
-    for (int s = 0; s < 2000; ++s) lattice.step();
+    lattice.initialise([](double, double, double& rho, double& ux, double& uy) {
+        rho = 1;
+        ux = 0.05;
+        uy = 0;
+    });
+    for (int s = 0; s < 2000; ++s)
+        lattice.step();
     for (long long c = 0; c < lattice.cells(); ++c) {
         if (!lattice.isFluid(c)) continue;
         double ux, uy;
@@ -126,10 +136,16 @@ void LatticeBoundaryTest::zouHeImposesVelocityAndPressure() {
     setup.collision.model = CollisionModel::Mrt;
     Lattice lattice(setup);
     // Start from the expected stream: Zou-He sides reflect sound, so a start from rest rings.
-    lattice.initialise([](double, double, double& rho, double& ux, double& uy) { rho = 1; ux = 0.04; uy = 0; });
+    lattice.initialise([](double, double, double& rho, double& ux, double& uy) {
+        rho = 1;
+        ux = 0.04;
+        uy = 0;
+    });
     const long long slot = lattice.index(5, 3); // the rest population of node (5, 3)
-    lattice.setPopulation(slot, 0, lattice.population(slot, 0) + 1e-3); // a disturbance the boundaries must clear
-    for (int s = 0; s < 4000; ++s) lattice.step();
+    lattice.setPopulation(
+        slot, 0, lattice.population(slot, 0) + 1e-3); // a disturbance the boundaries must clear
+    for (int s = 0; s < 4000; ++s)
+        lattice.step();
     for (int j = lattice.firstFluidY(); j < lattice.firstFluidY() + setup.ny; ++j) {
         double ux, uy;
         lattice.velocity(lattice.index(0, j), ux, uy);
@@ -137,7 +153,8 @@ void LatticeBoundaryTest::zouHeImposesVelocityAndPressure() {
         QVERIFY(std::abs(uy) < 1e-9);
         QVERIFY(std::abs(lattice.density(lattice.index(lattice.nx() - 1, j)) - 1.0) < 1e-9);
         lattice.velocity(lattice.index(lattice.nx() / 2, j), ux, uy);
-        QVERIFY2(std::abs(ux - 0.04) < 1e-5, qPrintable(QString("row %1: %2 %3").arg(j).arg(ux - 0.04).arg(uy)));
+        QVERIFY2(std::abs(ux - 0.04) < 1e-5,
+                 qPrintable(QString("row %1: %2 %3").arg(j).arg(ux - 0.04).arg(uy)));
     }
 }
 
@@ -150,9 +167,13 @@ void LatticeBoundaryTest::pressureBoundaryRelaxesDensity() {
     setup.top.rho = 1.0;
     setup.collision.model = CollisionModel::Mrt;
     Lattice lattice(setup);
-    lattice.initialise([](double, double, double& rho, double& ux, double& uy) { rho = 1.01; ux = uy = 0; });
+    lattice.initialise([](double, double, double& rho, double& ux, double& uy) {
+        rho = 1.01;
+        ux = uy = 0;
+    });
     const double initial = lattice.totalMass() / (16 * 16);
-    for (int s = 0; s < 8000; ++s) lattice.step();
+    for (int s = 0; s < 8000; ++s)
+        lattice.step();
     const double mean = lattice.totalMass() / (16 * 16);
     QVERIFY(std::abs(initial - 1.01) < 1e-12);
     QVERIFY2(std::abs(mean - 1.0) < 1e-4, qPrintable(QString::number(mean, 'g', 12)));
@@ -180,7 +201,8 @@ void LatticeBoundaryTest::closedBoxConservesMass() {
         uy = -0.03 * std::cos(0.25 * x);
     });
     const double before = box.totalMass();
-    for (int s = 0; s < 2000; ++s) box.step();
+    for (int s = 0; s < 2000; ++s)
+        box.step();
     const double after = box.totalMass();
     QVERIFY2(std::abs(after - before) / before < 1e-12,
              qPrintable(QString("relative change %1").arg(std::abs(after - before) / before)));
@@ -195,13 +217,15 @@ void LatticeBoundaryTest::guardNamesStepAndCause() {
     Lattice lattice(setup);
     StabilityGuard guard(1e-3);
     guard.check(lattice); // at rest: fine
-    lattice.setPopulation(lattice.index(3, 4), 0, std::numeric_limits<double>::quiet_NaN()); // rest population of (3, 4)
+    lattice.setPopulation(lattice.index(3, 4), 0,
+                          std::numeric_limits<double>::quiet_NaN()); // rest population of (3, 4)
     try {
         guard.check(lattice);
         QFAIL("the guard did not stop a NaN");
     } catch (const SimulationError& error) {
         const QString message = error.what();
-        QVERIFY2(message.contains("step 0") && message.contains("(3, 4)") && message.contains("too close to 0.5"),
+        QVERIFY2(message.contains("step 0") && message.contains("(3, 4)") &&
+                     message.contains("too close to 0.5"),
                  qPrintable(message));
     }
 }

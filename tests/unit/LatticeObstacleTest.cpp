@@ -33,16 +33,19 @@ void LatticeObstacleTest::forceBalancesBodyForce() {
     setup.collision.tau = 0.8;
     setup.fx = 2e-6;
     Lattice lattice(setup);
-    const int owner = polygon ? lattice.addPolygon({{15.3, 10.2}, {24.7, 10.2}, {24.7, 19.8}, {15.3, 19.8}})
-                              : lattice.addDisc(20.0, 15.0, 5.3);
+    const int owner =
+        polygon ? lattice.addPolygon({{15.3, 10.2}, {24.7, 10.2}, {24.7, 19.8}, {15.3, 19.8}})
+                : lattice.addDisc(20.0, 15.0, 5.3);
     long long fluid = 0;
-    for (long long c = 0; c < lattice.cells(); ++c) fluid += lattice.isFluid(c) ? 1 : 0;
-    for (int s = 0; s < 8000; ++s) lattice.step();
+    for (long long c = 0; c < lattice.cells(); ++c)
+        fluid += lattice.isFluid(c) ? 1 : 0;
+    for (int s = 0; s < 8000; ++s)
+        lattice.step();
     const ObstacleLoad& load = lattice.obstacleLoad(owner);
     const double expected = setup.fx * fluid;
     QVERIFY2(std::abs(load.fx - expected) < 5e-3 * expected,
              qPrintable(QString("drag %1, body force %2").arg(load.fx).arg(expected)));
-    QVERIFY(std::abs(load.fy) < 1e-3 * expected);      // symmetric about y = 15
+    QVERIFY(std::abs(load.fy) < 1e-3 * expected);     // symmetric about y = 15
     QVERIFY(std::abs(load.torque) < 1e-2 * expected); // about the centre of the symmetric body
 }
 

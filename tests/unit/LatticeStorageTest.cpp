@@ -1,4 +1,5 @@
-// Float population storage (f_i - w_i as float, collided in float by the bulk kernel) against double storage.
+// Float population storage (f_i - w_i as float, collided in float by the bulk kernel) against
+// double storage.
 #include "solver/core/InputError.h"
 #include "solver/lattice/Lattice.h"
 #include "solver/lattice/StabilityGuard.h"
@@ -15,7 +16,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 /// A periodic n x n box holding one Taylor-Green vortex of amplitude u0 at relaxation time tau.
-Lattice taylorGreenBox(int n, double tau, double u0, CollisionModel model, PopulationStorage storage) {
+Lattice taylorGreenBox(int n, double tau, double u0, CollisionModel model,
+                       PopulationStorage storage) {
     LatticeSetup setup;
     setup.nx = setup.ny = n;
     setup.left.type = setup.right.type = setup.bottom.type = setup.top.type = SideType::Periodic;
@@ -81,7 +83,8 @@ void LatticeStorageTest::restIsStoredAsZeroDeviation() {
         setup.storage = storage;
         const Lattice lattice(setup);
         QCOMPARE(lattice.storage(), storage);
-        const std::vector<double> f = lattice.exportPopulations(), stored = lattice.exportStoredValues();
+        const std::vector<double> f = lattice.exportPopulations(),
+                                  stored = lattice.exportStoredValues();
         for (std::size_t k = 0; k < f.size(); ++k) {
             const double w = kW[k / lattice.cells()];
             QCOMPARE(f[k], w);
@@ -105,7 +108,8 @@ void LatticeStorageTest::accessorsRoundToFloat() {
         const double value = kW[q] + 1.234567891e-5;
         lattice.setPopulation(slot, q, value);
         QVERIFY2(std::abs(lattice.population(slot, q) - value) <= 1.234567891e-5 * 0x1p-24,
-                 qPrintable(QString("direction %1: %2").arg(q).arg(lattice.population(slot, q) - value)));
+                 qPrintable(
+                     QString("direction %1: %2").arg(q).arg(lattice.population(slot, q) - value)));
     }
 }
 
@@ -126,8 +130,10 @@ void LatticeStorageTest::taylorGreenFloatMatchesDouble() {
     QFETCH(double, u0);
     const int n = 32, steps = 2000;
     const double tau = 0.51, nu = (tau - 0.5) / 3, k = 2 * kPi / n;
-    Lattice exact = taylorGreenBox(n, tau, u0, static_cast<CollisionModel>(model), PopulationStorage::Double);
-    Lattice single = taylorGreenBox(n, tau, u0, static_cast<CollisionModel>(model), PopulationStorage::Float);
+    Lattice exact =
+        taylorGreenBox(n, tau, u0, static_cast<CollisionModel>(model), PopulationStorage::Double);
+    Lattice single =
+        taylorGreenBox(n, tau, u0, static_cast<CollisionModel>(model), PopulationStorage::Float);
     for (int s = 0; s < steps; ++s) {
         exact.step();
         single.step();
@@ -138,12 +144,15 @@ void LatticeStorageTest::taylorGreenFloatMatchesDouble() {
     const double errFloat = velocityError(single, nullptr, u0, decay);
     const double gap = velocityError(single, &exact, u0, decay);
     const QString numbers = QString("L2 error double %1, float %2; float vs double %3")
-                                .arg(errDouble, 0, 'g', 6).arg(errFloat, 0, 'g', 6).arg(gap, 0, 'g', 3);
+                                .arg(errDouble, 0, 'g', 6)
+                                .arg(errFloat, 0, 'g', 6)
+                                .arg(gap, 0, 'g', 3);
     qInfo("%s", qPrintable(numbers));
     // Float storage rounds the deviation f_i - w_i, not f_i, to 2^-24 relative, and the bulk
     // kernel collides those deviations in float: the fields agree to 1e-6 (measured 2.8e-7,
-    // 1.6e-7, 1.8e-7 for the three rows; 1.4e-7, 1.3e-7, 9.7e-8 colliding in double; storing f_i itself as float
-    // gave 9.2e-6, 1.0e-5 and 7.3e-4, and 6 % more error than double at u0 = 1e-4)...
+    // 1.6e-7, 1.8e-7 for the three rows; 1.4e-7, 1.3e-7, 9.7e-8 colliding in double; storing f_i
+    // itself as float gave 9.2e-6, 1.0e-5 and 7.3e-4, and 6 % more error than double at u0 =
+    // 1e-4)...
     QVERIFY2(gap < 1e-6, qPrintable(numbers));
     // ...far below the discretisation error (0.64 %), so float's error is within 1 % of double's.
     QVERIFY2(errDouble < 0.02 && errFloat <= 1.01 * errDouble, qPrintable(numbers));
@@ -173,13 +182,16 @@ void LatticeStorageTest::storedValuesRoundTripIsBitForBit() {
         return lattice;
     };
     Lattice straight = box();
-    for (int s = 0; s < 2 * steps; ++s) straight.step();
+    for (int s = 0; s < 2 * steps; ++s)
+        straight.step();
     Lattice first = box();
-    for (int s = 0; s < steps; ++s) first.step();
+    for (int s = 0; s < steps; ++s)
+        first.step();
     Lattice resumed = box();
     resumed.importStoredValues(first.exportStoredValues());
     resumed.setStepCount(first.stepCount());
-    for (int s = 0; s < steps; ++s) resumed.step();
+    for (int s = 0; s < steps; ++s)
+        resumed.step();
     QVERIFY(sameBits(straight.exportStoredValues(), resumed.exportStoredValues()));
     QCOMPARE(resumed.obstacleLoad(0).fx, straight.obstacleLoad(0).fx);
 }

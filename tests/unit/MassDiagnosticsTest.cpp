@@ -22,7 +22,8 @@ struct Discs {
         inertia.push_back(0.5 * M_PI * radius * radius * radius * radius);
     }
     GrainArrays view() const {
-        return {x.size(), x.data(), y.data(), r.data(), vx.data(), vy.data(), omega.data(), mass.data(), inertia.data()};
+        return {x.size(),  x.data(),     y.data(),    r.data(),      vx.data(),
+                vy.data(), omega.data(), mass.data(), inertia.data()};
     }
 };
 
@@ -54,8 +55,9 @@ private slots:
 
 void MassDiagnosticsTest::runoutIgnoresDetachedGrains() {
     Discs d;
-    for (int i = 0; i < 10; ++i) d.add(0.5 + i, 0.5, 0.5); // a touching row from x = 0 to 10
-    d.add(20.0, 0.5, 0.5);                                  // a lone grain far ahead
+    for (int i = 0; i < 10; ++i)
+        d.add(0.5 + i, 0.5, 0.5); // a touching row from x = 0 to 10
+    d.add(20.0, 0.5, 0.5);        // a lone grain far ahead
     const auto result = computeMassDiagnostics(d.view(), params(4.0));
     QCOMPARE(result.main_mass_grains, std::size_t(10));
     QVERIFY(std::abs(result.front_x_m - 10.0) < 1e-12);
@@ -73,9 +75,11 @@ void MassDiagnosticsTest::squarePackingIsPiOverFour() {
     // Discs of diameter 1 on a square lattice fill pi/4 of the area under their flat top.
     Discs d;
     for (int i = 0; i < 20; ++i)
-        for (int j = 0; j < 10; ++j) d.add(0.5 + i, 0.5 + j, 0.5);
+        for (int j = 0; j < 10; ++j)
+            d.add(0.5 + i, 0.5 + j, 0.5);
     const auto result = computeMassDiagnostics(d.view(), params(20.0));
-    QVERIFY2(std::abs(result.packing_fraction - M_PI / 4) < 1e-9, qPrintable(QString::number(result.packing_fraction)));
+    QVERIFY2(std::abs(result.packing_fraction - M_PI / 4) < 1e-9,
+             qPrintable(QString::number(result.packing_fraction)));
     QVERIFY(std::abs(result.height_m - 10.0) < 1e-12);
     QCOMPARE(result.outline.front().first, 0.0);
     QCOMPARE(result.outline.back().first, 20.0);
@@ -95,14 +99,16 @@ void MassDiagnosticsTest::froudeNumberOfUniformFront() {
     // Square packing moving at U = 1, thickness 4: Fr = U / sqrt((rho_m/rho_w - 1) g H).
     Discs d;
     for (int i = 0; i < 20; ++i)
-        for (int j = 0; j < 4; ++j) d.add(0.5 + i, 0.5 + j, 0.5, 1.0);
+        for (int j = 0; j < 4; ++j)
+            d.add(0.5 + i, 0.5 + j, 0.5, 1.0);
     auto p = params(10.0);
     p.fluid_density = 1000;
     p.grain_density = 2650;
     const auto result = computeMassDiagnostics(d.view(), p);
     const double phi = M_PI / 4, mixture = phi * 2650 + (1 - phi) * 1000;
     const double expected = 1.0 / std::sqrt((mixture / 1000 - 1) * 9.81 * 4.0);
-    QVERIFY2(std::abs(result.froude_densimetric - expected) < 1e-9, qPrintable(QString::number(result.froude_densimetric)));
+    QVERIFY2(std::abs(result.froude_densimetric - expected) < 1e-9,
+             qPrintable(QString::number(result.froude_densimetric)));
 }
 
 void MassDiagnosticsTest::froudeNumberOfFlowingLayerOnly() {
@@ -110,7 +116,8 @@ void MassDiagnosticsTest::froudeNumberOfFlowingLayerOnly() {
     // flowing layer's thickness, 2, not the deposit's 4, and rho_m that of the layer (phi = pi/4).
     Discs d;
     for (int i = 0; i < 20; ++i)
-        for (int j = 0; j < 4; ++j) d.add(0.5 + i, 0.5 + j, 0.5, j >= 2 ? 1.0 : 0.0);
+        for (int j = 0; j < 4; ++j)
+            d.add(0.5 + i, 0.5 + j, 0.5, j >= 2 ? 1.0 : 0.0);
     auto p = params(10.0);
     p.fluid_density = 1000;
     p.grain_density = 2650;
@@ -120,17 +127,20 @@ void MassDiagnosticsTest::froudeNumberOfFlowingLayerOnly() {
     const double expected = 1.0 / std::sqrt((mixture / 1000 - 1) * 9.81 * 2.0 * std::cos(0.1));
     QVERIFY(std::abs(result.front_thickness_m - 2.0) < 1e-12);
     QVERIFY(std::abs(result.front_packing_fraction - phi) < 1e-12);
-    QVERIFY2(std::abs(result.froude_densimetric - expected) < 1e-9, qPrintable(QString::number(result.froude_densimetric)));
+    QVERIFY2(std::abs(result.froude_densimetric - expected) < 1e-9,
+             qPrintable(QString::number(result.froude_densimetric)));
 }
 
 void MassDiagnosticsTest::loneDiscLeavingAChainDoesNotCutIt() {
     // A touching row from x = 0 to 10 on the floor; disc 5 is lifted out of it. The hole it
     // leaves is one diameter wide: the row stays one mass and the front stays at 10.
     Discs d;
-    for (int i = 0; i < 10; ++i) d.add(0.5 + i, 0.5, 0.5);
+    for (int i = 0; i < 10; ++i)
+        d.add(0.5 + i, 0.5, 0.5);
     d.y[5] = 5.0;
     const auto result = computeMassDiagnostics(d.view(), params(4.0));
-    QVERIFY2(std::abs(result.front_x_m - 10.0) < 1e-12, qPrintable(QString::number(result.front_x_m)));
+    QVERIFY2(std::abs(result.front_x_m - 10.0) < 1e-12,
+             qPrintable(QString::number(result.front_x_m)));
     QCOMPARE(result.main_mass_grains, std::size_t(9));
 }
 
@@ -138,7 +148,8 @@ void MassDiagnosticsTest::tipDiscPartingOrRejoiningMovesFrontByItsDiameter() {
     // The front disc of a touching row rolls ahead: as soon as it stops touching, the front falls
     // back by its own diameter and no more, however far it goes; touching again, it counts again.
     Discs d;
-    for (int i = 0; i < 10; ++i) d.add(0.5 + i, 0.5, 0.5);
+    for (int i = 0; i < 10; ++i)
+        d.add(0.5 + i, 0.5, 0.5);
     for (const double gap : {0.0, 0.3, 0.9, 5.0}) {
         d.x[9] = 9.5 + gap;
         const auto result = computeMassDiagnostics(d.view(), params(4.0));

@@ -1,6 +1,6 @@
 // Planning: the paper's numbers follow from its SI parameters (docs/design.md §4, §5b).
-#include "solver/core/InputError.h"
 #include "solver/scene/Plan.h"
+#include "solver/core/InputError.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -45,7 +45,8 @@ void PlanTest::tauFromMach() {
     QVERIFY(std::abs(plan.mach - 0.1) < 1e-9);
     QVERIFY(plan.tau > 0.5);
     // tau = 1/2 + 3 nu dt / h^2 must hold both ways.
-    QVERIFY(std::abs(plan.tau - (0.5 + 3 * spec.fluid.viscosity_m2_s * plan.dt_s / (plan.h_m * plan.h_m))) < 1e-12);
+    QVERIFY(std::abs(plan.tau - (0.5 + 3 * spec.fluid.viscosity_m2_s * plan.dt_s /
+                                           (plan.h_m * plan.h_m))) < 1e-12);
 }
 
 void PlanTest::dryScenePlansNoLattice() {
@@ -84,7 +85,8 @@ void PlanTest::warnsWhenTauNearHalfWithoutLes() {
     spec.fluid.collision = "bgk";
     QVERIFY(!makePlan(spec).warnings.empty());
     spec.fluid.collision = "mrt_les";
-    for (const auto& warning : makePlan(spec).warnings) QVERIFY(warning.find("LES") == std::string::npos);
+    for (const auto& warning : makePlan(spec).warnings)
+        QVERIFY(warning.find("LES") == std::string::npos);
 }
 
 void PlanTest::saysHowFarAFrontCanRun() {
@@ -128,15 +130,19 @@ void PlanTest::substepsBeyondStabilityRefused() {
         QFAIL("one DEM sub-step per fluid step must be refused");
     } catch (const InputError& error) {
         QCOMPARE(QString::fromStdString(error.key()), QString("coupling.substeps"));
-        QVERIFY2(std::string(error.what()).find("stability limit") != std::string::npos, error.what());
+        QVERIFY2(std::string(error.what()).find("stability limit") != std::string::npos,
+                 error.what());
     }
     // Between the safety factor and the stability limit: planned, with a warning.
     const Plan automatic = makePlan(CaseSpec{});
-    spec.coupling.substeps = static_cast<int>(std::ceil(automatic.dt_s / automatic.dem_dt_stable_s)) + 1;
+    spec.coupling.substeps =
+        static_cast<int>(std::ceil(automatic.dt_s / automatic.dem_dt_stable_s)) + 1;
     const Plan plan = makePlan(spec);
     QVERIFY(plan.dem_dt_s > plan.dem_dt_safe_s);
     QCOMPARE(std::count_if(plan.warnings.begin(), plan.warnings.end(),
-                           [](const std::string& w) { return w.find("coupling.substeps") != std::string::npos; }),
+                           [](const std::string& w) {
+                               return w.find("coupling.substeps") != std::string::npos;
+                           }),
              std::ptrdiff_t(1));
 }
 

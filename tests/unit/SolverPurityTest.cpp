@@ -20,7 +20,8 @@ const QRegularExpression kForbidden(
 QStringList forbiddenIncludes(const QString& text) {
     QStringList found;
     auto it = kForbidden.globalMatch(text);
-    while (it.hasNext()) found << it.next().captured(0).trimmed();
+    while (it.hasNext())
+        found << it.next().captured(0).trimmed();
     return found;
 }
 
@@ -28,7 +29,8 @@ QStringList forbiddenIncludes(const QString& text) {
 
 void SolverPurityTest::noForbiddenIncludesOutsideIo() {
     const QString root = QStringLiteral(LBDEM_SOURCE_DIR "/solver");
-    QDirIterator it(root, {"*.h", "*.hpp", "*.cpp", "*.cc"}, QDir::Files, QDirIterator::Subdirectories);
+    QDirIterator it(root, {"*.h", "*.hpp", "*.cpp", "*.cc"}, QDir::Files,
+                    QDirIterator::Subdirectories);
     int checked = 0;
     QStringList offenders;
     while (it.hasNext()) {
@@ -49,7 +51,8 @@ void SolverPurityTest::detectorCatchesForbiddenInclude() {
     QCOMPARE(forbiddenIncludes("  #include \"vtkPolyData.h\"\n").size(), 1);
     QCOMPARE(forbiddenIncludes("#include <hdf5.h>\n").size(), 1);
     QCOMPARE(forbiddenIncludes("#include <toml++/toml.h>\n").size(), 1);
-    QCOMPARE(forbiddenIncludes("#include <Eigen/Core>\n#include \"solver/core/Real.h\"\n").size(), 0);
+    QCOMPARE(forbiddenIncludes("#include <Eigen/Core>\n#include \"solver/core/Real.h\"\n").size(),
+             0);
 }
 
 QTEST_APPLESS_MAIN(SolverPurityTest)

@@ -17,12 +17,18 @@ void TextDistanceTest::distance_data() {
     QTest::addColumn<QString>("a");
     QTest::addColumn<QString>("b");
     QTest::addColumn<int>("expected");
-    QTest::newRow("equal") << "tau" << "tau" << 0;
-    QTest::newRow("substitution") << "tau" << "tan" << 1;
-    QTest::newRow("transposition") << "fluid.tua" << "fluid.tau" << 2;
-    QTest::newRow("insertion") << "flud" << "fluid" << 1;
-    QTest::newRow("empty") << "" << "abc" << 3;
-    QTest::newRow("kitten") << "kitten" << "sitting" << 3;
+    QTest::newRow("equal") << "tau"
+                           << "tau" << 0;
+    QTest::newRow("substitution") << "tau"
+                                  << "tan" << 1;
+    QTest::newRow("transposition") << "fluid.tua"
+                                   << "fluid.tau" << 2;
+    QTest::newRow("insertion") << "flud"
+                               << "fluid" << 1;
+    QTest::newRow("empty") << ""
+                           << "abc" << 3;
+    QTest::newRow("kitten") << "kitten"
+                            << "sitting" << 3;
 }
 
 void TextDistanceTest::distance() {

@@ -20,10 +20,14 @@ void FluidCasesTest::sampleMatchesBuilder_data() {
     QTest::addColumn<QString>("scene");
     QTest::addColumn<int>("nodes");
     QTest::addColumn<QString>("collision");
-    QTest::newRow("poiseuille") << "poiseuille.toml" << "poiseuille" << 16 << "mrt";
-    QTest::newRow("taylor_green") << "taylor_green.toml" << "taylor_green" << 32 << "mrt";
-    QTest::newRow("cavity") << "cavity_re100.toml" << "cavity" << 128 << "mrt";
-    QTest::newRow("cylinder") << "cylinder_2d1.toml" << "cylinder" << 20 << "mrt";
+    QTest::newRow("poiseuille") << "poiseuille.toml"
+                                << "poiseuille" << 16 << "mrt";
+    QTest::newRow("taylor_green") << "taylor_green.toml"
+                                  << "taylor_green" << 32 << "mrt";
+    QTest::newRow("cavity") << "cavity_re100.toml"
+                            << "cavity" << 128 << "mrt";
+    QTest::newRow("cylinder") << "cylinder_2d1.toml"
+                              << "cylinder" << 20 << "mrt";
 }
 
 void FluidCasesTest::sampleMatchesBuilder() {
@@ -31,7 +35,8 @@ void FluidCasesTest::sampleMatchesBuilder() {
     QFETCH(QString, scene);
     QFETCH(int, nodes);
     QFETCH(QString, collision);
-    const auto fromFile = io::loadCase(LBDEM_SOURCE_DIR "/sample_cases/verification/" + file.toStdString());
+    const auto fromFile =
+        io::loadCase(LBDEM_SOURCE_DIR "/sample_cases/verification/" + file.toStdString());
     const auto built = solver::fluidCase(scene.toStdString(), nodes, collision.toStdString());
     const auto a = solver::flowScales(fromFile), b = solver::flowScales(built);
     QCOMPARE(fromFile.scene, built.scene);

@@ -17,7 +17,9 @@ private slots:
 };
 
 namespace {
-bool longRun() { return qEnvironmentVariableIsSet("LBDEM_VERIFY_LONG"); }
+bool longRun() {
+    return qEnvironmentVariableIsSet("LBDEM_VERIFY_LONG");
+}
 
 /// LBDEM_VERIFY_SHARD = "k/n": run only every n-th selected case starting at the k-th (from 0),
 /// so that CTest can spread the cases over its parallel slots; unset: every case.
@@ -48,10 +50,13 @@ void VerificationCasesTest::casePasses() {
     QVERIFY2(!results.empty(), "the case compared nothing");
     std::set<std::string> methods;
     for (const auto& r : results) {
-        qInfo("%s [%s]: %s = %.6g (reference %.6g, error %.3g, tolerance %.3g, %.1f s)", r.name.c_str(),
-              r.method.c_str(), r.quantity.c_str(), r.value, r.reference, r.error, r.tolerance, r.wall_s);
-        QVERIFY2(!r.source.empty(), qPrintable(QString::fromStdString(r.quantity + ": no source cited")));
-        QVERIFY2(r.passed, qPrintable(QString::fromStdString(r.method + " " + r.quantity + ": " + r.source)));
+        qInfo("%s [%s]: %s = %.6g (reference %.6g, error %.3g, tolerance %.3g, %.1f s)",
+              r.name.c_str(), r.method.c_str(), r.quantity.c_str(), r.value, r.reference, r.error,
+              r.tolerance, r.wall_s);
+        QVERIFY2(!r.source.empty(),
+                 qPrintable(QString::fromStdString(r.quantity + ": no source cited")));
+        QVERIFY2(r.passed,
+                 qPrintable(QString::fromStdString(r.method + " " + r.quantity + ": " + r.source)));
         methods.insert(r.method);
     }
     // A coupling case runs both methods side by side.

@@ -135,7 +135,8 @@ QWidget* CaseEditor::makeEditor(Field& field) {
         field.editor = box;
     } else if (decl.type == ParamType::Choice) {
         auto* combo = new QComboBox;
-        for (const auto& choice : decl.choices) combo->addItem(QString::fromStdString(choice));
+        for (const auto& choice : decl.choices)
+            combo->addItem(QString::fromStdString(choice));
         connect(combo, &QComboBox::currentTextChanged, this, &CaseEditor::revalidate);
         field.editor = combo;
     } else {
@@ -196,10 +197,12 @@ void CaseEditor::revalidate() {
         else if (auto* combo = qobject_cast<QComboBox*>(field.editor))
             value = combo->currentText().toStdString();
         else if (auto* line = qobject_cast<QLineEdit*>(field.editor))
-            value = field.decl->type == ParamType::Text ? std::optional<ParamValue>(line->text().toStdString())
-                                                        : parseNumber(line->text());
-        std::string reason = value ? field.decl->check(*value)
-                                   : "expected " + std::string(solver::describeType(field.decl->type));
+            value = field.decl->type == ParamType::Text
+                        ? std::optional<ParamValue>(line->text().toStdString())
+                        : parseNumber(line->text());
+        std::string reason =
+            value ? field.decl->check(*value)
+                  : "expected " + std::string(solver::describeType(field.decl->type));
         if (reason.empty())
             field.decl->set(spec, *value);
         else
@@ -228,9 +231,10 @@ void CaseEditor::revalidate() {
     problems = fieldProblems + problems;
     m_case = spec;
     m_problems = problems;
-    m_summary->setText(problems.isEmpty() ? QString()
-                                          : tr("Run is disabled until this is fixed: %1")
-                                                .arg(problems.join("; ")));
+    m_summary->setText(
+        problems.isEmpty()
+            ? QString()
+            : tr("Run is disabled until this is fixed: %1").arg(problems.join("; ")));
     m_summary->setVisible(!problems.isEmpty());
     emit caseEdited();
     if (wasValid != isValid()) emit validityChanged(isValid());

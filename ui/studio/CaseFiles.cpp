@@ -37,14 +37,17 @@ QStringList samplePresets() {
     return presets;
 }
 
-QStringList recentCaseFiles() { return QSettings().value(kRecentKey).toStringList(); }
+QStringList recentCaseFiles() {
+    return QSettings().value(kRecentKey).toStringList();
+}
 
 void rememberCaseFile(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     QStringList files = recentCaseFiles();
     files.removeAll(absolute);
     files.prepend(absolute);
-    while (files.size() > kMaxRecent) files.removeLast();
+    while (files.size() > kMaxRecent)
+        files.removeLast();
     QSettings().setValue(kRecentKey, files);
 }
 

@@ -21,7 +21,8 @@ LivePlots::LivePlots(QWidget* parent) : QWidget(parent) {
     m_froude->setReferenceLine(0.4, tr("hydroplaning 0.4"));
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    for (PlotWidget* plot : {m_runout, m_energy, m_froude}) layout->addWidget(plot);
+    for (PlotWidget* plot : {m_runout, m_energy, m_froude})
+        layout->addWidget(plot);
 }
 
 void LivePlots::addSnapshot(const solver::Snapshot& snapshot) {
@@ -51,12 +52,14 @@ void LivePlots::clear() {
 void LivePlots::writeCsv(const QString& path) const {
     std::set<std::string> names;
     for (const Row& row : m_rows)
-        for (const auto& [name, value] : row.metrics) names.insert(name);
+        for (const auto& [name, value] : row.metrics)
+            names.insert(name);
     names.erase("step"), names.erase("time_s"), names.erase("t_over_tc");
     std::ostringstream csv;
     csv.precision(10);
     csv << "step,time_s,t_over_tc";
-    for (const auto& name : names) csv << ',' << name;
+    for (const auto& name : names)
+        csv << ',' << name;
     csv << '\n';
     for (const Row& row : m_rows) {
         csv << row.step << ',' << row.time_s << ',' << row.t_over_tc;

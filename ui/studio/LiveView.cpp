@@ -28,15 +28,18 @@ namespace {
 class PanZoomStyle : public vtkInteractorStyleImage {
 public:
     static PanZoomStyle* New();
-    vtkTypeMacro(PanZoomStyle, vtkInteractorStyleImage)
-    void OnLeftButtonDown() override { vtkInteractorStyleImage::OnMiddleButtonDown(); }
+    vtkTypeMacro(PanZoomStyle, vtkInteractorStyleImage) void OnLeftButtonDown() override {
+        vtkInteractorStyleImage::OnMiddleButtonDown();
+    }
     void OnLeftButtonUp() override { vtkInteractorStyleImage::OnMiddleButtonUp(); }
 };
 vtkStandardNewMacro(PanZoomStyle)
 
 } // namespace
 
-void configureOpenGlFormat() { QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat()); }
+void configureOpenGlFormat() {
+    QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+}
 
 struct LiveView::Impl {
     vis::SceneView scene;
@@ -71,11 +74,17 @@ void LiveView::showSnapshot(const solver::SnapshotPtr& snapshot) {
     redraw();
 }
 
-const vis::LayerSet& LiveView::layers() const { return m_impl->scene.layers(); }
+const vis::LayerSet& LiveView::layers() const {
+    return m_impl->scene.layers();
+}
 
-const vis::ColorRange& LiveView::fluidColorRange() const { return m_impl->scene.fluidColorRange(); }
+const vis::ColorRange& LiveView::fluidColorRange() const {
+    return m_impl->scene.fluidColorRange();
+}
 
-const vis::ColorRange& LiveView::grainColorRange() const { return m_impl->scene.grainColorRange(); }
+const vis::ColorRange& LiveView::grainColorRange() const {
+    return m_impl->scene.grainColorRange();
+}
 
 void LiveView::setLayers(const vis::LayerSet& layers) {
     m_impl->scene.setLayers(layers);
@@ -90,7 +99,8 @@ void LiveView::setChainThreshold(double factor) {
 void LiveView::resetCamera() {
     m_impl->cameraMoved = false;
     const qreal ratio = m_impl->widget->devicePixelRatioF();
-    m_impl->scene.resize(int(m_impl->widget->width() * ratio), int(m_impl->widget->height() * ratio));
+    m_impl->scene.resize(int(m_impl->widget->width() * ratio),
+                         int(m_impl->widget->height() * ratio));
     m_impl->widget->renderWindow()->Render();
 }
 
@@ -105,9 +115,13 @@ void LiveView::redraw() {
     emit colorRangesShown(m_impl->scene.fluidColorRange(), m_impl->scene.grainColorRange());
 }
 
-QImage LiveView::grabImage() { return m_impl->widget->grabFramebuffer(); }
+QImage LiveView::grabImage() {
+    return m_impl->widget->grabFramebuffer();
+}
 
-QWidget* LiveView::renderWidget() const { return m_impl->widget; }
+QWidget* LiveView::renderWidget() const {
+    return m_impl->widget;
+}
 
 std::pair<double, double> LiveView::worldAt(int x, int y) const {
     const qreal ratio = m_impl->widget->devicePixelRatioF();

@@ -30,9 +30,9 @@
 namespace lbdem::studio {
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), m_controller(new SimulationController(this)),
-      m_editor(new CaseEditor), m_view(new LiveView), m_controls(new ViewControls),
-      m_plots(new LivePlots), m_status(new RunStatusBar) {
+    : QMainWindow(parent), m_controller(new SimulationController(this)), m_editor(new CaseEditor),
+      m_view(new LiveView), m_controls(new ViewControls), m_plots(new LivePlots),
+      m_status(new RunStatusBar) {
     setWindowTitle(tr("lbdem studio"));
     auto* viewPane = new QWidget;
     auto* viewLayout = new QVBoxLayout(viewPane);
@@ -72,7 +72,9 @@ MainWindow::MainWindow(QWidget* parent)
     updateActions();
 }
 
-MainWindow::~MainWindow() { m_controller->shutdown(); }
+MainWindow::~MainWindow() {
+    m_controller->shutdown();
+}
 
 void MainWindow::createActions() {
     auto make = [this](const QString& text, QKeySequence key, const QString& tip) {
@@ -93,8 +95,9 @@ void MainWindow::createActions() {
                        tr("Save the live view as a PNG image"));
     m_exportCsv = make(tr("Export plots as &CSV..."), QKeySequence(),
                        tr("Save the metrics of every frame shown as CSV"));
-    m_recordVtk = make(tr("Record &VTU series..."), QKeySequence(),
-                       tr("Write every frame shown as VTU/VTI files with .pvd series for ParaView"));
+    m_recordVtk =
+        make(tr("Record &VTU series..."), QKeySequence(),
+             tr("Write every frame shown as VTU/VTI files with .pvd series for ParaView"));
     m_recordVtk->setCheckable(true);
     connect(m_open, &QAction::triggered, this, &MainWindow::openDialog);
     connect(m_save, &QAction::triggered, this, &MainWindow::saveDialog);
@@ -110,9 +113,11 @@ void MainWindow::createActions() {
     auto* toolbar = addToolBar(tr("Run"));
     toolbar->setObjectName("runToolbar");
     toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    for (QAction* action : {m_open, m_save}) toolbar->addAction(action);
+    for (QAction* action : {m_open, m_save})
+        toolbar->addAction(action);
     toolbar->addSeparator();
-    for (QAction* action : {m_run, m_pause, m_step, m_reset}) toolbar->addAction(action);
+    for (QAction* action : {m_run, m_pause, m_step, m_reset})
+        toolbar->addAction(action);
     toolbar->addSeparator();
     toolbar->addAction(m_exportPng);
 }
@@ -127,7 +132,8 @@ void MainWindow::createMenus() {
         const QString folder = preset.contains('/') ? preset.section('/', 0, 0) : QString();
         QMenu* menu = m_presetMenu;
         if (!folder.isEmpty()) {
-            const auto existing = m_presetMenu->findChildren<QMenu*>(folder, Qt::FindDirectChildrenOnly);
+            const auto existing =
+                m_presetMenu->findChildren<QMenu*>(folder, Qt::FindDirectChildrenOnly);
             menu = existing.isEmpty() ? m_presetMenu->addMenu(folder) : existing.front();
             menu->setObjectName(folder);
         }
@@ -136,11 +142,13 @@ void MainWindow::createMenus() {
     m_presetMenu->setEnabled(!m_presetMenu->isEmpty());
     file->addAction(m_save);
     file->addSeparator();
-    for (QAction* action : {m_exportPng, m_exportCsv, m_recordVtk}) file->addAction(action);
+    for (QAction* action : {m_exportPng, m_exportCsv, m_recordVtk})
+        file->addAction(action);
     file->addSeparator();
     file->addAction(m_quit);
     QMenu* run = menuBar()->addMenu(tr("&Run"));
-    for (QAction* action : {m_run, m_pause, m_step, m_reset}) run->addAction(action);
+    for (QAction* action : {m_run, m_pause, m_step, m_reset})
+        run->addAction(action);
     rebuildRecentMenu();
 }
 
@@ -237,14 +245,16 @@ void MainWindow::rebuildRecentMenu() {
 
 void MainWindow::openDialog() {
     const QString dir = QSettings().value("files/lastDir", sampleCasesDir()).toString();
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open case"), dir, tr("Cases (*.toml)"));
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open case"), dir, tr("Cases (*.toml)"));
     if (path.isEmpty()) return;
     QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
     openCaseFile(path);
 }
 
 void MainWindow::saveDialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save case"), m_casePath, tr("Cases (*.toml)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save case"), m_casePath, tr("Cases (*.toml)"));
     if (path.isEmpty()) return;
     try {
         io::writeCase(m_editor->currentCase(), path.toStdString());
@@ -257,14 +267,16 @@ void MainWindow::saveDialog() {
 }
 
 void MainWindow::exportPng() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export view"), "view.png", tr("PNG (*.png)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export view"), "view.png", tr("PNG (*.png)"));
     if (path.isEmpty()) return;
     if (!m_view->grabImage().save(path, "PNG"))
         QMessageBox::warning(this, tr("Cannot export"), tr("Could not write %1.").arg(path));
 }
 
 void MainWindow::exportCsv() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plots"), "metrics.csv", tr("CSV (*.csv)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export plots"), "metrics.csv", tr("CSV (*.csv)"));
     if (path.isEmpty()) return;
     try {
         m_plots->writeCsv(path);

@@ -96,8 +96,8 @@ void PlotWidget::paintEvent(QPaintEvent*) {
     }
     painter.drawText(QRectF(frame.left() + 3, frame.top() + 2, frame.width(), line), Qt::AlignLeft,
                      m_yLabel);
-    painter.drawText(QRectF(frame.left(), frame.bottom() + 1, frame.width(), line),
-                     Qt::AlignRight, QString::number(x1, 'g', 3));
+    painter.drawText(QRectF(frame.left(), frame.bottom() + 1, frame.width(), line), Qt::AlignRight,
+                     QString::number(x1, 'g', 3));
     if (m_reference) {
         painter.setPen(QPen(QColor(200, 60, 60), 1, Qt::DashLine));
         painter.drawLine(map(x0, *m_reference), map(x1, *m_reference));
@@ -107,7 +107,8 @@ void PlotWidget::paintEvent(QPaintEvent*) {
                          m_referenceLabel);
     }
     QPainterPath path(map(m_points.front().x(), m_points.front().y()));
-    for (const QPointF& p : m_points) path.lineTo(map(p.x(), p.y()));
+    for (const QPointF& p : m_points)
+        path.lineTo(map(p.x(), p.y()));
     painter.setPen(QPen(QColor(30, 90, 180), 1.6));
     painter.drawPath(path);
 }

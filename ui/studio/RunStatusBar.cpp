@@ -29,14 +29,16 @@ void RunStatusBar::setPlan(const solver::Plan& plan) {
                                             .arg(plan.ny)
                                       : tr("dry: no fluid"));
     m_warningList.clear();
-    for (const auto& warning : plan.warnings) m_warningList << QString::fromStdString(warning);
+    for (const auto& warning : plan.warnings)
+        m_warningList << QString::fromStdString(warning);
     showWarnings();
     m_time->setText(tr("t/\u03c4c 0.000"));
     m_speed->clear();
 }
 
 void RunStatusBar::setProgress(const RunProgress& progress) {
-    m_time->setText(tr("step %1, t/\u03c4c %2").arg(progress.step).arg(progress.time_over_tc, 0, 'f', 3));
+    m_time->setText(
+        tr("step %1, t/\u03c4c %2").arg(progress.step).arg(progress.time_over_tc, 0, 'f', 3));
     if (progress.steps_per_second > 0)
         m_speed->setText(tr("%1 steps/s, %2 MLUPS")
                              .arg(progress.steps_per_second, 0, 'f', 1)
@@ -45,14 +47,18 @@ void RunStatusBar::setProgress(const RunProgress& progress) {
         m_speed->clear();
 }
 
-void RunStatusBar::setState(RunState state) { m_state->setText(runStateName(state)); }
+void RunStatusBar::setState(RunState state) {
+    m_state->setText(runStateName(state));
+}
 
 void RunStatusBar::addWarning(const QString& warning) {
     m_warningList << warning;
     showWarnings();
 }
 
-void RunStatusBar::setProbe(const QString& text) { m_probe->setText(text); }
+void RunStatusBar::setProbe(const QString& text) {
+    m_probe->setText(text);
+}
 
 QString RunStatusBar::summary() const {
     QStringList parts;

@@ -50,8 +50,8 @@ void ScriptedRun::complete() {
         if (!m_options.screenshot.isEmpty()) {
             const QImage image = grabWindow(&m_window);
             if (image.save(m_options.screenshot, "PNG")) {
-                std::cout << "wrote " << m_options.screenshot.toStdString() << " ("
-                          << image.width() << " x " << image.height() << ")\n";
+                std::cout << "wrote " << m_options.screenshot.toStdString() << " (" << image.width()
+                          << " x " << image.height() << ")\n";
             } else {
                 std::cerr << "lbdem-studio: cannot write the screenshot "
                           << m_options.screenshot.toStdString() << ".\n";

@@ -12,9 +12,9 @@ class MainWindow;
 
 /// What `lbdem-studio CASE --run-steps N --screenshot FILE --quit` asks for.
 struct ScriptOptions {
-    long long steps = 0;  ///< steps to run (0: just show the start)
-    QString screenshot;   ///< PNG of the whole window, empty for none
-    bool quit = false;    ///< leave once the screenshot is saved
+    long long steps = 0; ///< steps to run (0: just show the start)
+    QString screenshot;  ///< PNG of the whole window, empty for none
+    bool quit = false;   ///< leave once the screenshot is saved
 };
 
 /// Drives a MainWindow whose case is already set: starts the run on the worker, waits until the

@@ -26,7 +26,9 @@ SimulationController::SimulationController(QObject* parent) : QObject(parent) {
     m_thread.start();
 }
 
-SimulationController::~SimulationController() { shutdown(); }
+SimulationController::~SimulationController() {
+    shutdown();
+}
 
 void SimulationController::load(const solver::CaseSpec& spec) {
     m_case = spec;
@@ -54,9 +56,8 @@ void SimulationController::releaseFrame(int idleMs) {
         post([](SimulationWorker& worker) { worker.releaseFrame(); });
         return;
     }
-    QTimer::singleShot(idleMs, this, [this] {
-        post([](SimulationWorker& worker) { worker.releaseFrame(); });
-    });
+    QTimer::singleShot(idleMs, this,
+                       [this] { post([](SimulationWorker& worker) { worker.releaseFrame(); }); });
 }
 
 void SimulationController::shutdown() {

@@ -16,9 +16,9 @@ class Simulation;
 
 namespace lbdem::studio {
 
-/// Lives on the thread of a SimulationController (docs/design.md, Style §3): every slot runs there, between
-/// batches, so pause, step and reset need no lock. A batch steps for about kBatchMs and then
-/// re-queues itself. A snapshot is published at most every kFrameIntervalMs and only after the
+/// Lives on the thread of a SimulationController (docs/design.md, Style §3): every slot runs there,
+/// between batches, so pause, step and reset need no lock. A batch steps for about kBatchMs and
+/// then re-queues itself. A snapshot is published at most every kFrameIntervalMs and only after the
 /// GUI released the previous one (releaseFrame): frames are skipped, never queued.
 class SimulationWorker : public QObject {
     Q_OBJECT
@@ -69,11 +69,11 @@ private:
 
     std::unique_ptr<solver::Simulation> m_simulation;
     RunState m_state = RunState::Empty;
-    long long m_stepsLeft = 0;   ///< steps still to take in this run; <= 0: until finished
-    bool m_batchQueued = false;  ///< a runBatch is waiting in the event queue
+    long long m_stepsLeft = 0;    ///< steps still to take in this run; <= 0: until finished
+    bool m_batchQueued = false;   ///< a runBatch is waiting in the event queue
     bool m_frameInFlight = false; ///< the GUI has not released the last snapshot yet
-    bool m_dirty = false;        ///< the state changed since the last published snapshot
-    double m_nodesPerStep = 0;   ///< lattice nodes updated per step, for MLUPS
+    bool m_dirty = false;         ///< the state changed since the last published snapshot
+    double m_nodesPerStep = 0;    ///< lattice nodes updated per step, for MLUPS
     long long m_stepAtProgress = 0;
     QElapsedTimer m_sincePublish;
     QElapsedTimer m_sinceProgress;

@@ -11,7 +11,8 @@ ProbeResult probeSnapshot(const solver::Snapshot& snapshot, double x, double y) 
     ProbeResult result;
     result.x = x;
     result.y = y;
-    result.inDomain = x >= 0 && y >= 0 && x <= snapshot.domain_width_m && y <= snapshot.domain_height_m;
+    result.inDomain =
+        x >= 0 && y >= 0 && x <= snapshot.domain_width_m && y <= snapshot.domain_height_m;
     if (snapshot.fluid && snapshot.fluid->spacing_m > 0) {
         const auto& fluid = *snapshot.fluid;
         const long ix = std::lround((x - fluid.origin_x) / fluid.spacing_m);

@@ -12,12 +12,18 @@ void registerStudioTypes() {
 
 const char* runStateName(RunState state) {
     switch (state) {
-    case RunState::Empty: return "no case";
-    case RunState::Ready: return "ready";
-    case RunState::Running: return "running";
-    case RunState::Paused: return "paused";
-    case RunState::Finished: return "finished";
-    case RunState::Failed: return "stopped by an error";
+    case RunState::Empty:
+        return "no case";
+    case RunState::Ready:
+        return "ready";
+    case RunState::Running:
+        return "running";
+    case RunState::Paused:
+        return "paused";
+    case RunState::Finished:
+        return "finished";
+    case RunState::Failed:
+        return "stopped by an error";
     }
     return "";
 }

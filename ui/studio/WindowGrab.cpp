@@ -36,13 +36,15 @@ double nonUniformFraction(const QImage& source) {
     QHash<QRgb, long long> counts;
     for (int y = 0; y < image.height(); ++y) {
         const auto* row = reinterpret_cast<const QRgb*>(image.constScanLine(y));
-        for (int x = 0; x < image.width(); ++x) ++counts[row[x]];
+        for (int x = 0; x < image.width(); ++x)
+            ++counts[row[x]];
     }
     const QRgb common = std::max_element(counts.begin(), counts.end()).key();
     long long different = 0;
     for (auto it = counts.begin(); it != counts.end(); ++it) {
         const QRgb c = it.key();
-        const int distance = std::abs(qRed(c) - qRed(common)) + std::abs(qGreen(c) - qGreen(common)) +
+        const int distance = std::abs(qRed(c) - qRed(common)) +
+                             std::abs(qGreen(c) - qGreen(common)) +
                              std::abs(qBlue(c) - qBlue(common));
         if (distance > 12) different += it.value();
     }

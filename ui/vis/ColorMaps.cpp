@@ -22,7 +22,8 @@ constexpr const char* kUnicodeFont = "/usr/share/fonts/truetype/dejavu/DejaVuSan
 vtkSmartPointer<vtkLookupTable> tableFrom(std::initializer_list<std::array<double, 4>> points) {
     vtkNew<vtkColorTransferFunction> function;
     function->SetColorSpaceToLab();
-    for (const auto& p : points) function->AddRGBPoint(p[0], p[1], p[2], p[3]);
+    for (const auto& p : points)
+        function->AddRGBPoint(p[0], p[1], p[2], p[3]);
     auto table = vtkSmartPointer<vtkLookupTable>::New();
     table->SetNumberOfTableValues(kTableSize);
     for (int k = 0; k < kTableSize; ++k) {
@@ -37,14 +38,18 @@ vtkSmartPointer<vtkLookupTable> tableFrom(std::initializer_list<std::array<doubl
 
 vtkSmartPointer<vtkLookupTable> makeSequentialLookupTable() {
     // Viridis at six stops (matplotlib's _viridis_data at 0, 0.2, ..., 1).
-    return tableFrom({{0.0, 0.267, 0.005, 0.329}, {0.2, 0.254, 0.265, 0.530},
-                      {0.4, 0.164, 0.471, 0.558}, {0.6, 0.135, 0.659, 0.518},
-                      {0.8, 0.478, 0.821, 0.318}, {1.0, 0.993, 0.906, 0.144}});
+    return tableFrom({{0.0, 0.267, 0.005, 0.329},
+                      {0.2, 0.254, 0.265, 0.530},
+                      {0.4, 0.164, 0.471, 0.558},
+                      {0.6, 0.135, 0.659, 0.518},
+                      {0.8, 0.478, 0.821, 0.318},
+                      {1.0, 0.993, 0.906, 0.144}});
 }
 
 vtkSmartPointer<vtkLookupTable> makeDivergingLookupTable() {
     // Moreland's cool-warm end points with a light grey centre.
-    return tableFrom({{0.0, 0.230, 0.299, 0.754}, {0.5, 0.865, 0.865, 0.865}, {1.0, 0.706, 0.016, 0.150}});
+    return tableFrom(
+        {{0.0, 0.230, 0.299, 0.754}, {0.5, 0.865, 0.865, 0.865}, {1.0, 0.706, 0.016, 0.150}});
 }
 
 vtkSmartPointer<vtkLookupTable> makeGrainLookupTable() {
@@ -85,6 +90,10 @@ bool useUnicodeFont(vtkTextProperty* text) {
     return true;
 }
 
-std::string timeOverTcSymbol(bool unicode) { return unicode ? "t/\xcf\x84" "c" : "t/tau_c"; }
+std::string timeOverTcSymbol(bool unicode) {
+    return unicode ? "t/\xcf\x84"
+                     "c"
+                   : "t/tau_c";
+}
 
 } // namespace lbdem::vis

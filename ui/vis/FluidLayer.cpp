@@ -29,18 +29,24 @@ constexpr int kContourCount = 8;
 /// Array name and colour-bar title of each field.
 const char* arrayName(FluidField field) {
     switch (field) {
-    case FluidField::Pressure: return "pressure";
-    case FluidField::Vorticity: return "vorticity";
-    case FluidField::Speed: break;
+    case FluidField::Pressure:
+        return "pressure";
+    case FluidField::Vorticity:
+        return "vorticity";
+    case FluidField::Speed:
+        break;
     }
     return "speed";
 }
 
 const char* barTitle(FluidField field) {
     switch (field) {
-    case FluidField::Pressure: return "excess pressure [Pa]";
-    case FluidField::Vorticity: return "vorticity [1/s]";
-    case FluidField::Speed: break;
+    case FluidField::Pressure:
+        return "excess pressure [Pa]";
+    case FluidField::Vorticity:
+        return "vorticity [1/s]";
+    case FluidField::Speed:
+        break;
     }
     return "fluid speed [m/s]";
 }
@@ -48,8 +54,10 @@ const char* barTitle(FluidField field) {
 } // namespace
 
 FluidLayer::FluidLayer()
-    : m_image(vtkSmartPointer<vtkImageData>::New()), m_colors(vtkSmartPointer<vtkImageMapToColors>::New()),
-      m_actor(vtkSmartPointer<vtkImageActor>::New()), m_contours(vtkSmartPointer<vtkContourFilter>::New()),
+    : m_image(vtkSmartPointer<vtkImageData>::New()),
+      m_colors(vtkSmartPointer<vtkImageMapToColors>::New()),
+      m_actor(vtkSmartPointer<vtkImageActor>::New()),
+      m_contours(vtkSmartPointer<vtkContourFilter>::New()),
       m_contourMapper(vtkSmartPointer<vtkPolyDataMapper>::New()),
       m_contourActor(vtkSmartPointer<vtkActor>::New()), m_sequential(makeSequentialLookupTable()),
       m_diverging(makeDivergingLookupTable()) {
@@ -79,9 +87,13 @@ void FluidLayer::addTo(vtkRenderer* renderer) {
     renderer->AddViewProp(m_bar);
 }
 
-void FluidLayer::setField(FluidField field) { m_field = field; }
+void FluidLayer::setField(FluidField field) {
+    m_field = field;
+}
 
-void FluidLayer::setRange(const ColorRange& range) { m_range = range; }
+void FluidLayer::setRange(const ColorRange& range) {
+    m_range = range;
+}
 
 void FluidLayer::setVisible(bool visible) {
     m_visible = visible;

@@ -1,4 +1,5 @@
-// Force chains as quads built directly: VTK line width is per actor, so varying width needs geometry.
+// Force chains as quads built directly: VTK line width is per actor, so varying width needs
+// geometry.
 #include "ui/vis/ForceChainLayer.h"
 
 #include "ui/vis/ColorMaps.h"
@@ -23,7 +24,8 @@
 namespace lbdem::vis {
 
 ForceChainLayer::ForceChainLayer()
-    : m_strips(vtkSmartPointer<vtkPolyData>::New()), m_mapper(vtkSmartPointer<vtkPolyDataMapper>::New()),
+    : m_strips(vtkSmartPointer<vtkPolyData>::New()),
+      m_mapper(vtkSmartPointer<vtkPolyDataMapper>::New()),
       m_actor(vtkSmartPointer<vtkActor>::New()), m_table(makeForceLookupTable()) {
     m_mapper->SetInputData(m_strips);
     m_mapper->SetLookupTable(m_table);
@@ -47,7 +49,9 @@ void ForceChainLayer::setVisible(bool visible) {
     applyVisibility();
 }
 
-void ForceChainLayer::setDepth(double z) { m_actor->SetPosition(0, 0, z); }
+void ForceChainLayer::setDepth(double z) {
+    m_actor->SetPosition(0, 0, z);
+}
 
 vtkScalarBarActor* ForceChainLayer::colorBar() const {
     return m_visible && m_drawn > 0 ? m_bar.Get() : nullptr;
@@ -67,14 +71,16 @@ void ForceChainLayer::update(const solver::Snapshot& snapshot) {
     force->SetName("normal_force");
     m_drawn = 0;
     if (c.size() > 0 && g.size() > 0) {
-        const double mean = std::accumulate(c.normal_force.begin(), c.normal_force.end(), 0.0) / c.size();
+        const double mean =
+            std::accumulate(c.normal_force.begin(), c.normal_force.end(), 0.0) / c.size();
         const double peak = *std::max_element(c.normal_force.begin(), c.normal_force.end());
         const double radius = std::accumulate(g.radius.begin(), g.radius.end(), 0.0) / g.size();
         const double cut = m_threshold * mean;
         std::size_t wallOrdinal = 0;
         for (std::size_t k = 0; k < c.size(); ++k) {
             const bool wall = c.j[k] < 0;
-            const auto wallPoint = wall ? wallContactPoint(c, k, wallOrdinal++) : std::pair<float, float>{};
+            const auto wallPoint =
+                wall ? wallContactPoint(c, k, wallOrdinal++) : std::pair<float, float>{};
             if (c.normal_force[k] <= cut || peak <= 0) continue;
             const auto a = static_cast<std::size_t>(c.i[k]);
             const double ax = g.x[a], ay = g.y[a];

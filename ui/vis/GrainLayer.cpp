@@ -42,8 +42,9 @@ vtkSmartPointer<vtkGlyph3DMapper> discMapper(vtkUnstructuredGrid* points, bool f
 } // namespace
 
 GrainLayer::GrainLayer()
-    : m_points(vtkSmartPointer<vtkUnstructuredGrid>::New()), m_discs(vtkSmartPointer<vtkActor>::New()),
-      m_rims(vtkSmartPointer<vtkActor>::New()), m_table(makeGrainLookupTable()) {
+    : m_points(vtkSmartPointer<vtkUnstructuredGrid>::New()),
+      m_discs(vtkSmartPointer<vtkActor>::New()), m_rims(vtkSmartPointer<vtkActor>::New()),
+      m_table(makeGrainLookupTable()) {
     m_discMapper = discMapper(m_points, true);
     m_discMapper->SetScalarModeToUsePointFieldData();
     m_discMapper->SetLookupTable(m_table);
@@ -69,9 +70,13 @@ void GrainLayer::addTo(vtkRenderer* renderer) {
     renderer->AddViewProp(m_bar);
 }
 
-void GrainLayer::setColoring(GrainColoring coloring) { m_coloring = coloring; }
+void GrainLayer::setColoring(GrainColoring coloring) {
+    m_coloring = coloring;
+}
 
-void GrainLayer::setRange(const ColorRange& range) { m_range = range; }
+void GrainLayer::setRange(const ColorRange& range) {
+    m_range = range;
+}
 
 void GrainLayer::setVisible(bool visible) {
     m_visible = visible;

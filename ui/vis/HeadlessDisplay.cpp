@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstddef>
 #include <csignal>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -60,7 +60,8 @@ bool socketAnswers(const std::string& path) {
     const bool abstract = path[0] == '@';
     std::memcpy(address.sun_path, path.c_str(), std::min(path.size(), sizeof address.sun_path - 1));
     if (abstract) address.sun_path[0] = '\0';
-    const auto length = static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + path.size() + (abstract ? 0 : 1));
+    const auto length =
+        static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + path.size() + (abstract ? 0 : 1));
     const bool answered = ::connect(fd, reinterpret_cast<sockaddr*>(&address), length) == 0;
     ::close(fd);
     return answered;
@@ -86,9 +87,11 @@ HeadlessDisplay::HeadlessDisplay() {
     const std::string xvfb = findOnPath("Xvfb");
     if (xvfb.empty()) throw std::runtime_error(kMissingXvfb);
     int fds[2];
-    if (::pipe(fds) != 0) throw std::runtime_error(std::string("cannot start Xvfb: ") + std::strerror(errno));
+    if (::pipe(fds) != 0)
+        throw std::runtime_error(std::string("cannot start Xvfb: ") + std::strerror(errno));
     const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error(std::string("cannot start Xvfb: ") + std::strerror(errno));
+    if (pid < 0)
+        throw std::runtime_error(std::string("cannot start Xvfb: ") + std::strerror(errno));
     if (pid == 0) {
         // The server must not outlive us even if we are killed before the destructor runs.
         ::prctl(PR_SET_PDEATHSIG, SIGTERM);
@@ -116,8 +119,10 @@ HeadlessDisplay::~HeadlessDisplay() {
     if (m_pid <= 0) return;
     ::kill(m_pid, SIGTERM);
     ::waitpid(m_pid, nullptr, 0);
-    if (m_previous.empty()) ::unsetenv("DISPLAY");
-    else ::setenv("DISPLAY", m_previous.c_str(), 1);
+    if (m_previous.empty())
+        ::unsetenv("DISPLAY");
+    else
+        ::setenv("DISPLAY", m_previous.c_str(), 1);
 }
 
 void ensureDisplay() {

@@ -11,7 +11,8 @@ namespace lbdem::vis {
 
 namespace {
 
-const std::vector<std::string> kLayerNames = {"fluid", "grains", "chains", "outline", "streamlines"};
+const std::vector<std::string> kLayerNames = {"fluid", "grains", "chains", "outline",
+                                              "streamlines"};
 
 /// The message for an unknown word, with a suggestion when one is close.
 std::string unknownWord(const std::string& what, const std::string& word,
@@ -20,7 +21,8 @@ std::string unknownWord(const std::string& what, const std::string& word,
     const std::string nearest = solver::nearestWord(word, known);
     if (!nearest.empty()) message += " (did you mean '" + nearest + "'?)";
     message += "; known: ";
-    for (std::size_t k = 0; k < known.size(); ++k) message += (k ? ", " : "") + known[k];
+    for (std::size_t k = 0; k < known.size(); ++k)
+        message += (k ? ", " : "") + known[k];
     return message;
 }
 
@@ -35,15 +37,22 @@ LayerSet parseLayerSet(const std::string& text) {
     while (std::getline(stream, name, ',')) {
         if (name.empty()) continue;
         any = true;
-        if (name == "fluid") layers.fluid = true;
-        else if (name == "grains") layers.grains = true;
-        else if (name == "chains") layers.chains = true;
-        else if (name == "outline") layers.outline = true;
-        else if (name == "streamlines") layers.streamlines = true;
-        else throw solver::InputError(unknownWord("layer", name, kLayerNames));
+        if (name == "fluid")
+            layers.fluid = true;
+        else if (name == "grains")
+            layers.grains = true;
+        else if (name == "chains")
+            layers.chains = true;
+        else if (name == "outline")
+            layers.outline = true;
+        else if (name == "streamlines")
+            layers.streamlines = true;
+        else
+            throw solver::InputError(unknownWord("layer", name, kLayerNames));
     }
-    if (!any) throw solver::InputError("--layers needs at least one of fluid, grains, chains, "
-                                       "outline, streamlines");
+    if (!any)
+        throw solver::InputError("--layers needs at least one of fluid, grains, chains, "
+                                 "outline, streamlines");
     return layers;
 }
 
@@ -71,9 +80,12 @@ GrainColoring parseGrainColoring(const std::string& text) {
 
 std::string fluidFieldName(FluidField field) {
     switch (field) {
-    case FluidField::Pressure: return "pressure";
-    case FluidField::Vorticity: return "vorticity";
-    case FluidField::Speed: break;
+    case FluidField::Pressure:
+        return "pressure";
+    case FluidField::Vorticity:
+        return "vorticity";
+    case FluidField::Speed:
+        break;
     }
     return "speed";
 }

@@ -34,8 +34,9 @@ namespace lbdem::vis {
 namespace {
 
 // Tableau-10 colours, distinguishable and colour-blind tolerant.
-constexpr unsigned char kPalette[][3] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
-                                         {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127}};
+constexpr unsigned char kPalette[][3] = {{31, 119, 180},  {255, 127, 14},  {44, 160, 44},
+                                         {214, 39, 40},   {148, 103, 189}, {140, 86, 75},
+                                         {227, 119, 194}, {127, 127, 127}};
 
 /// A two-column table (x, y) for one curve.
 vtkSmartPointer<vtkTable> curveTable(const std::string& name, const std::vector<double>& x,
@@ -56,18 +57,24 @@ vtkSmartPointer<vtkTable> curveTable(const std::string& name, const std::vector<
 /// The vtkPen line type of a line style.
 int penLineType(LineStyle style) {
     switch (style) {
-    case LineStyle::Dashed: return vtkPen::DASH_LINE;
-    case LineStyle::Dotted: return vtkPen::DOT_LINE;
-    case LineStyle::DashDotted: return vtkPen::DASH_DOT_LINE;
-    case LineStyle::Solid: break;
+    case LineStyle::Dashed:
+        return vtkPen::DASH_LINE;
+    case LineStyle::Dotted:
+        return vtkPen::DOT_LINE;
+    case LineStyle::DashDotted:
+        return vtkPen::DASH_DOT_LINE;
+    case LineStyle::Solid:
+        break;
     }
     return vtkPen::SOLID_LINE;
 }
 
 /// Adds one plot of `table` to `chart` in palette colour `index` and the given style: a line, or
 /// a point (vtkChart::POINTS) when the table has one row, as VTK cannot draw a one-point line.
-vtkPlot* addLine(vtkChartXY* chart, vtkTable* table, std::size_t index, float width, LineStyle style) {
-    vtkPlot* plot = chart->AddPlot(table->GetNumberOfRows() < 2 ? vtkChart::POINTS : vtkChart::LINE);
+vtkPlot* addLine(vtkChartXY* chart, vtkTable* table, std::size_t index, float width,
+                 LineStyle style) {
+    vtkPlot* plot =
+        chart->AddPlot(table->GetNumberOfRows() < 2 ? vtkChart::POINTS : vtkChart::LINE);
     plot->SetInputData(table, 0, 1);
     const auto* rgb = kPalette[index % (sizeof kPalette / sizeof kPalette[0])];
     plot->SetColor(rgb[0], rgb[1], rgb[2], 255);
@@ -84,11 +91,13 @@ void dataRange(const ChartSpec& spec, double range[4]) {
         for (std::size_t k = 0; k < s.x.size(); ++k) {
             range[0] = std::min(range[0], s.x[k]), range[1] = std::max(range[1], s.x[k]);
             range[2] = std::min(range[2], s.y[k]), range[3] = std::max(range[3], s.y[k]);
-            if (k < s.low.size()) range[2] = std::min(range[2], s.low[k]), range[3] = std::max(range[3], s.high[k]);
+            if (k < s.low.size())
+                range[2] = std::min(range[2], s.low[k]), range[3] = std::max(range[3], s.high[k]);
         }
     for (const auto& r : spec.references) {
         const int axis = r.horizontal ? 2 : 0;
-        range[axis] = std::min(range[axis], r.value), range[axis + 1] = std::max(range[axis + 1], r.value);
+        range[axis] = std::min(range[axis], r.value),
+        range[axis + 1] = std::max(range[axis + 1], r.value);
     }
 }
 
@@ -130,7 +139,9 @@ void addPlots(const ChartSpec& spec, vtkChartXY* chart) {
     dataRange(spec, range);
     for (std::size_t k = 0; k < spec.series.size(); ++k)
         if (!spec.series[k].low.empty())
-            addBand(chart, spec.series[k], spec.series[k].colour >= 0 ? static_cast<std::size_t>(spec.series[k].colour) : k);
+            addBand(chart, spec.series[k],
+                    spec.series[k].colour >= 0 ? static_cast<std::size_t>(spec.series[k].colour)
+                                               : k);
     for (std::size_t k = 0; k < spec.series.size(); ++k) {
         const auto& s = spec.series[k];
         const std::size_t colour = s.colour >= 0 ? static_cast<std::size_t>(s.colour) : k;
@@ -138,12 +149,15 @@ void addPlots(const ChartSpec& spec, vtkChartXY* chart) {
         // Markers differ with the line style too, so that styles stay apart where no line is drawn.
         const int markers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
                                vtkPlotPoints::CROSS};
-        if (auto* points = vtkPlotPoints::SafeDownCast(plot); points && (s.markers || s.x.size() < 2))
+        if (auto* points = vtkPlotPoints::SafeDownCast(plot);
+            points && (s.markers || s.x.size() < 2))
             points->SetMarkerStyle(markers[static_cast<int>(s.style)]);
     }
     for (const auto& r : spec.references) {
-        const std::vector<double> xs = r.horizontal ? std::vector<double>{range[0], range[1]} : std::vector<double>{r.value, r.value};
-        const std::vector<double> ys = r.horizontal ? std::vector<double>{r.value, r.value} : std::vector<double>{range[2], range[3]};
+        const std::vector<double> xs = r.horizontal ? std::vector<double>{range[0], range[1]}
+                                                    : std::vector<double>{r.value, r.value};
+        const std::vector<double> ys = r.horizontal ? std::vector<double>{r.value, r.value}
+                                                    : std::vector<double>{range[2], range[3]};
         vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
         plot->SetInputData(curveTable(r.name, xs, ys), 0, 1);
         plot->SetColor(0, 0, 0, 200);
@@ -158,7 +172,8 @@ void setLogRange(vtkAxis* axis, double low, double high, double below, double ab
     const double decades = std::max(std::log10(high / low), 0.5);
     axis->SetLogScale(true);
     axis->SetBehavior(vtkAxis::FIXED);
-    axis->SetUnscaledRange(low * std::pow(10.0, -below * decades), high * std::pow(10.0, above * decades));
+    axis->SetUnscaledRange(low * std::pow(10.0, -below * decades),
+                           high * std::pow(10.0, above * decades));
 }
 
 /// Fixed axis ranges with a margin, so end points and markers are not cut by the frame and the
@@ -167,7 +182,8 @@ void fitAxes(const ChartSpec& spec, vtkChartXY* chart) {
     double range[4];
     dataRange(spec, range);
     bool markers = false;
-    for (const auto& s : spec.series) markers = markers || s.markers;
+    for (const auto& s : spec.series)
+        markers = markers || s.markers;
     const double dy = std::max(range[3] - range[2], 1e-12);
     // A single x value (e.g. a sweep of one slope) still gets an axis: 10 % or 0.5 either side.
     const double xPad = range[1] > range[0] ? (markers ? 0.04 * (range[1] - range[0]) : 0.0)
@@ -177,14 +193,17 @@ void fitAxes(const ChartSpec& spec, vtkChartXY* chart) {
     const std::size_t entries = spec.legend ? spec.series.size() + spec.references.size() : 0;
     const double headRoom = std::max(0.2, 0.045 * static_cast<double>(entries));
     const double y0 = range[2] == 0 ? 0.0 : range[2] - 0.05 * dy, y1 = range[3] + headRoom * dy;
-    for (const auto& [axis, low, high] : {std::tuple{vtkAxis::BOTTOM, x0, x1}, std::tuple{vtkAxis::LEFT, y0, y1}}) {
+    for (const auto& [axis, low, high] :
+         {std::tuple{vtkAxis::BOTTOM, x0, x1}, std::tuple{vtkAxis::LEFT, y0, y1}}) {
         chart->GetAxis(axis)->SetBehavior(vtkAxis::FIXED);
         chart->GetAxis(axis)->SetRange(low, high);
     }
     bool labelled = false;
-    for (const auto& s : spec.series) labelled = labelled || !s.labels.empty();
+    for (const auto& s : spec.series)
+        labelled = labelled || !s.labels.empty();
     if (spec.logX) // labels sit right of their points: room for the last one
-        setLogRange(chart->GetAxis(vtkAxis::BOTTOM), range[0], range[1], 0.05, labelled ? 0.2 : 0.05);
+        setLogRange(chart->GetAxis(vtkAxis::BOTTOM), range[0], range[1], 0.05,
+                    labelled ? 0.2 : 0.05);
     if (spec.logY) setLogRange(chart->GetAxis(vtkAxis::LEFT), range[2], range[3], 0.05, headRoom);
 }
 
@@ -224,23 +243,29 @@ void renderLineChart(const ChartSpec& spec, const std::string& path, int width, 
     std::size_t points = 0;
     for (const auto& s : spec.series) {
         if (s.x.size() != s.y.size())
-            throw std::invalid_argument("chart series '" + s.name + "' has " + std::to_string(s.x.size()) +
-                                        " x values but " + std::to_string(s.y.size()) + " y values");
+            throw std::invalid_argument("chart series '" + s.name + "' has " +
+                                        std::to_string(s.x.size()) + " x values but " +
+                                        std::to_string(s.y.size()) + " y values");
         if (!s.labels.empty() && s.labels.size() != s.x.size())
-            throw std::invalid_argument("chart series '" + s.name + "' has " + std::to_string(s.labels.size()) +
-                                        " labels for " + std::to_string(s.x.size()) + " points");
-        if ((!s.low.empty() || !s.high.empty()) && (s.low.size() != s.x.size() || s.high.size() != s.x.size()))
-            throw std::invalid_argument("chart series '" + s.name + "' has a band that does not match its " +
+            throw std::invalid_argument("chart series '" + s.name + "' has " +
+                                        std::to_string(s.labels.size()) + " labels for " +
+                                        std::to_string(s.x.size()) + " points");
+        if ((!s.low.empty() || !s.high.empty()) &&
+            (s.low.size() != s.x.size() || s.high.size() != s.x.size()))
+            throw std::invalid_argument("chart series '" + s.name +
+                                        "' has a band that does not match its " +
                                         std::to_string(s.x.size()) + " points");
         for (std::size_t k = 0; k < s.x.size(); ++k)
             if ((spec.logX && !(s.x[k] > 0)) || (spec.logY && !(s.y[k] > 0)))
-                throw std::invalid_argument("chart series '" + s.name + "' has a value that is not positive on a "
+                throw std::invalid_argument("chart series '" + s.name +
+                                            "' has a value that is not positive on a "
                                             "logarithmic axis");
         points += s.x.size();
     }
     for (const auto& r : spec.references)
         if ((r.horizontal ? spec.logY : spec.logX) && !(r.value > 0))
-            throw std::invalid_argument("reference line '" + r.name + "' is not positive on a logarithmic axis");
+            throw std::invalid_argument("reference line '" + r.name +
+                                        "' is not positive on a logarithmic axis");
     if (points == 0) throw std::invalid_argument("chart '" + spec.title + "' has no points");
     ensureDisplay();
     vtkNew<vtkContextView> view;
@@ -265,7 +290,8 @@ void renderLineChart(const ChartSpec& spec, const std::string& path, int width, 
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(spec.yTitle);
     chart->SetShowLegend(spec.legend);
     chart->GetLegend()->SetInline(true);
-    chart->GetLegend()->SetHorizontalAlignment(spec.legendAtLeft ? vtkChartLegend::LEFT : vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetHorizontalAlignment(spec.legendAtLeft ? vtkChartLegend::LEFT
+                                                                 : vtkChartLegend::RIGHT);
     chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
     addPlots(spec, chart);
     fitAxes(spec, chart);
@@ -302,7 +328,8 @@ ChartSpec runoutVsSlopeChart(std::vector<ChartSeries> series, const std::string&
     spec.title = "Final runout against slope";
     spec.xTitle = "slope [deg]";
     spec.yTitle = yTitle;
-    for (auto& s : series) s.markers = true;
+    for (auto& s : series)
+        s.markers = true;
     spec.series = std::move(series);
     return spec;
 }

@@ -35,7 +35,7 @@ struct ChartSpec {
     std::vector<ChartSeries> series;
     std::vector<ReferenceLine> references;
     bool legend = true;
-    bool legendAtLeft = false; ///< legend in the top-left corner instead of the top-right one
+    bool legendAtLeft = false;       ///< legend in the top-left corner instead of the top-right one
     bool logX = false, logY = false; ///< logarithmic axes (every value on them must be positive)
 };
 
@@ -53,6 +53,7 @@ ChartSpec timeSeriesChart(const std::string& title, const std::string& yTitle,
 ChartSpec froudeChart(std::vector<ChartSeries> series);
 /// Final runout against slope [deg], one series per scene kind (dry, wet dense, wet loose),
 /// with markers at the swept slopes; yTitle names the runout measure and its unit.
-ChartSpec runoutVsSlopeChart(std::vector<ChartSeries> series, const std::string& yTitle = "final runout [m]");
+ChartSpec runoutVsSlopeChart(std::vector<ChartSeries> series,
+                             const std::string& yTitle = "final runout [m]");
 
 } // namespace lbdem::vis

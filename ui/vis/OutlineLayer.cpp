@@ -62,7 +62,8 @@ void OutlineLayer::applyVisibility() {
 void OutlineLayer::update(const solver::Snapshot& snapshot) {
     vtkNew<vtkPoints> points;
     std::vector<vtkIdType> ids;
-    for (const auto& [x, y] : snapshot.outline) ids.push_back(points->InsertNextPoint(x, y, 0));
+    for (const auto& [x, y] : snapshot.outline)
+        ids.push_back(points->InsertNextPoint(x, y, 0));
     vtkNew<vtkCellArray> lines;
     if (ids.size() >= 2) lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     vtkNew<vtkPolyData> line;

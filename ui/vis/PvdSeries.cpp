@@ -22,11 +22,20 @@ std::string xmlEscape(const std::string& text) {
     std::string out;
     for (const char c : text) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '"': out += "&quot;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        default: out += c;
+        case '&':
+            out += "&amp;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -66,9 +75,10 @@ void PvdSeries::append(double time_s, const std::string& file) {
 
 void PvdSeries::dropAfter(double time_s) {
     const auto before = m_entries.size();
-    m_entries.erase(std::remove_if(m_entries.begin(), m_entries.end(),
-                                   [time_s](const PvdEntry& entry) { return entry.time_s > time_s; }),
-                    m_entries.end());
+    m_entries.erase(
+        std::remove_if(m_entries.begin(), m_entries.end(),
+                       [time_s](const PvdEntry& entry) { return entry.time_s > time_s; }),
+        m_entries.end());
     if (m_entries.size() != before) rewrite();
 }
 
@@ -78,8 +88,8 @@ void PvdSeries::rewrite() const {
         << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
         << "  <Collection>\n";
     for (const PvdEntry& entry : m_entries)
-        xml << "    <DataSet timestep=\"" << shortestText(entry.time_s) << "\" group=\"\" part=\"0\" file=\""
-            << xmlEscape(entry.file) << "\"/>\n";
+        xml << "    <DataSet timestep=\"" << shortestText(entry.time_s)
+            << "\" group=\"\" part=\"0\" file=\"" << xmlEscape(entry.file) << "\"/>\n";
     xml << "  </Collection>\n</VTKFile>\n";
     writeTextAtomically(m_path, xml.str());
 }
@@ -97,7 +107,8 @@ std::vector<PvdEntry> readPvd(const std::string& path) {
     if (!collection) return entries;
     for (int k = 0; k < collection->GetNumberOfNestedElements(); ++k) {
         vtkXMLDataElement* element = collection->GetNestedElement(k);
-        if (std::string(element->GetName()) != "DataSet" || !element->GetAttribute("file")) continue;
+        if (std::string(element->GetName()) != "DataSet" || !element->GetAttribute("file"))
+            continue;
         double time = 0;
         element->GetScalarAttribute("timestep", time);
         entries.push_back({time, element->GetAttribute("file")});

@@ -49,13 +49,15 @@ void sceneBounds(const solver::Snapshot& s, double bounds[4]) {
         bounds[0] = std::min(bounds[0], x - r), bounds[1] = std::max(bounds[1], x + r);
         bounds[2] = std::min(bounds[2], y - r), bounds[3] = std::max(bounds[3], y + r);
     };
-    for (std::size_t k = 0; k < s.grains.size(); ++k) grow(s.grains.x[k], s.grains.y[k], s.grains.radius[k]);
+    for (std::size_t k = 0; k < s.grains.size(); ++k)
+        grow(s.grains.x[k], s.grains.y[k], s.grains.radius[k]);
     if (s.fluid) {
         const auto& f = *s.fluid;
         grow(f.origin_x, f.origin_y, 0);
         grow(f.origin_x + (f.nx - 1) * f.spacing_m, f.origin_y + (f.ny - 1) * f.spacing_m, 0);
     }
-    if (!(bounds[1] > bounds[0]) || !(bounds[3] > bounds[2])) bounds[0] = 0, bounds[1] = 1, bounds[2] = 0, bounds[3] = 1;
+    if (!(bounds[1] > bounds[0]) || !(bounds[3] > bounds[2]))
+        bounds[0] = 0, bounds[1] = 1, bounds[2] = 0, bounds[3] = 1;
 }
 
 } // namespace
@@ -63,17 +65,18 @@ void sceneBounds(const solver::Snapshot& s, double bounds[4]) {
 std::string timeLabel(const solver::Snapshot& s, bool unicode) {
     char text[96];
     if (s.tc_s > 0)
-        std::snprintf(text, sizeof text, "%s = %.2f   (t = %.3f s)", timeOverTcSymbol(unicode).c_str(),
-                      s.timeOverTc(), s.time_s);
+        std::snprintf(text, sizeof text, "%s = %.2f   (t = %.3f s)",
+                      timeOverTcSymbol(unicode).c_str(), s.timeOverTc(), s.time_s);
     else
         std::snprintf(text, sizeof text, "t = %.3f s", s.time_s);
     return text;
 }
 
 SceneView::SceneView()
-    : m_renderer(vtkSmartPointer<vtkRenderer>::New()), m_label(vtkSmartPointer<vtkTextActor>::New()),
-      m_fluid(std::make_unique<FluidLayer>()), m_grains(std::make_unique<GrainLayer>()),
-      m_chains(std::make_unique<ForceChainLayer>()), m_outline(std::make_unique<OutlineLayer>()),
+    : m_renderer(vtkSmartPointer<vtkRenderer>::New()),
+      m_label(vtkSmartPointer<vtkTextActor>::New()), m_fluid(std::make_unique<FluidLayer>()),
+      m_grains(std::make_unique<GrainLayer>()), m_chains(std::make_unique<ForceChainLayer>()),
+      m_outline(std::make_unique<OutlineLayer>()),
       m_streamlines(std::make_unique<StreamlineLayer>()), m_walls(std::make_unique<WallLayer>()) {
     m_renderer->SetBackground(1.0, 1.0, 1.0);
     m_fluid->addTo(m_renderer);
@@ -93,7 +96,9 @@ SceneView::SceneView()
 
 SceneView::~SceneView() = default;
 
-vtkRenderer* SceneView::renderer() const { return m_renderer; }
+vtkRenderer* SceneView::renderer() const {
+    return m_renderer;
+}
 
 void SceneView::setLayers(const LayerSet& layers) {
     m_layers = layers;
@@ -108,14 +113,19 @@ void SceneView::setLayers(const LayerSet& layers) {
     m_streamlines->setVisible(layers.streamlines);
 }
 
-const ColorRange& SceneView::fluidColorRange() const { return m_fluid->shownRange(); }
+const ColorRange& SceneView::fluidColorRange() const {
+    return m_fluid->shownRange();
+}
 
-const ColorRange& SceneView::grainColorRange() const { return m_grains->shownRange(); }
+const ColorRange& SceneView::grainColorRange() const {
+    return m_grains->shownRange();
+}
 
 void SceneView::update(const solver::Snapshot& snapshot) {
     sceneBounds(snapshot, m_domain);
     const auto& radius = snapshot.grains.radius;
-    m_meanRadius = radius.empty() ? 0.0 : std::accumulate(radius.begin(), radius.end(), 0.0) / radius.size();
+    m_meanRadius =
+        radius.empty() ? 0.0 : std::accumulate(radius.begin(), radius.end(), 0.0) / radius.size();
     const double size = std::max(m_domain[1] - m_domain[0], m_domain[3] - m_domain[2]);
     m_streamlines->setDepth(kDepthStreamlines * size);
     m_grains->setDepth(kDepthGrains * size);
@@ -139,7 +149,8 @@ void SceneView::resize(int width, int height) {
     if (width <= 0 || height <= 0) return;
     const double w = m_domain[1] - m_domain[0], h = m_domain[3] - m_domain[2];
     const std::vector<vtkScalarBarActor*> bars = visibleColorBars();
-    const bool stacked = bars.size() > 1 && (1 - 2 * kSideMargin) * width / bars.size() < kBarMinWidth;
+    const bool stacked =
+        bars.size() > 1 && (1 - 2 * kSideMargin) * width / bars.size() < kBarMinWidth;
     const double barRows = bars.empty() ? 0.0 : stacked ? static_cast<double>(bars.size()) : 1.0;
     const double barPixels = barRows * kBarRowPixels;
     const double sceneWidth = (1 - 2 * kSideMargin) * width;
@@ -151,7 +162,8 @@ void SceneView::resize(int width, int height) {
     const double sceneTop = height - top - kLabelPixels - kGapPixels;
     const double sceneBottom = sceneTop - scenePixels;
     m_label->SetPosition(kSideMargin * width, height - top - kLabelPixels + 8);
-    placeColorBars(bars, stacked, (sceneBottom - kGapPixels - barPixels) / height, kBarRowPixels / height);
+    placeColorBars(bars, stacked, (sceneBottom - kGapPixels - barPixels) / height,
+                   kBarRowPixels / height);
     m_grains->setRimsVisible(m_meanRadius / perPixel >= kRimMinPixels);
     const double centreX = 0.5 * (m_domain[0] + m_domain[1]);
     const double centreY = 0.5 * (m_domain[2] + m_domain[3]) -
@@ -175,7 +187,8 @@ std::vector<vtkScalarBarActor*> SceneView::visibleColorBars() const {
 
 void SceneView::placeColorBars(const std::vector<vtkScalarBarActor*>& bars, bool stacked,
                                double bottom, double rowHeight) {
-    const double slot = (1.0 - 2 * kSideMargin) / (stacked ? 1 : std::max<std::size_t>(bars.size(), 1));
+    const double slot =
+        (1.0 - 2 * kSideMargin) / (stacked ? 1 : std::max<std::size_t>(bars.size(), 1));
     for (std::size_t k = 0; k < bars.size(); ++k) {
         const std::size_t row = stacked ? bars.size() - 1 - k : 0, column = stacked ? 0 : k;
         bars[k]->SetPosition(kSideMargin + column * slot + 0.02, bottom + row * rowHeight);

@@ -64,14 +64,18 @@ StreamlineLayer::StreamlineLayer()
 
 StreamlineLayer::~StreamlineLayer() = default;
 
-void StreamlineLayer::addTo(vtkRenderer* renderer) { renderer->AddActor(m_actor); }
+void StreamlineLayer::addTo(vtkRenderer* renderer) {
+    renderer->AddActor(m_actor);
+}
 
 void StreamlineLayer::setVisible(bool visible) {
     m_visible = visible;
     m_actor->SetVisibility(m_visible && m_hasData);
 }
 
-void StreamlineLayer::setDepth(double z) { m_actor->SetPosition(0, 0, z); }
+void StreamlineLayer::setDepth(double z) {
+    m_actor->SetPosition(0, 0, z);
+}
 
 int StreamlineLayer::lineCount() const {
     return m_hasData ? static_cast<int>(m_tracer->GetOutput()->GetNumberOfLines()) : 0;

@@ -51,7 +51,8 @@ double fieldValue(vtkFieldData* data, const char* name, double fallback) {
 
 /// Copies a vector of floats into component `component` of `array` (at most its tuple count).
 void fill(vtkFloatArray* array, const std::vector<float>& values, int component = 0) {
-    const auto count = std::min(values.size(), static_cast<std::size_t>(array->GetNumberOfTuples()));
+    const auto count =
+        std::min(values.size(), static_cast<std::size_t>(array->GetNumberOfTuples()));
     for (std::size_t k = 0; k < count; ++k)
         array->SetTypedComponent(static_cast<vtkIdType>(k), component, values[k]);
 }
@@ -121,8 +122,10 @@ std::vector<float> contactForcePerGrain(const solver::Snapshot& s) {
     const auto n = static_cast<std::int32_t>(sum.size());
     for (std::size_t k = 0; k < s.contacts.size(); ++k) {
         const float f = s.contacts.normal_force[k];
-        if (s.contacts.i[k] >= 0 && s.contacts.i[k] < n) sum[static_cast<std::size_t>(s.contacts.i[k])] += f;
-        if (s.contacts.j[k] >= 0 && s.contacts.j[k] < n) sum[static_cast<std::size_t>(s.contacts.j[k])] += f;
+        if (s.contacts.i[k] >= 0 && s.contacts.i[k] < n)
+            sum[static_cast<std::size_t>(s.contacts.i[k])] += f;
+        if (s.contacts.j[k] >= 0 && s.contacts.j[k] < n)
+            sum[static_cast<std::size_t>(s.contacts.j[k])] += f;
     }
     return sum;
 }
@@ -164,10 +167,11 @@ vtkSmartPointer<vtkUnstructuredGrid> particlesToVtk(const solver::Snapshot& s) {
     fill(force, g.fy, 1);
     fill(contactForce, contactForcePerGrain(s));
     for (vtkIdType k = 0; k < n; ++k)
-        speed->SetValue(k, std::hypot(velocity->GetTypedComponent(k, 0), velocity->GetTypedComponent(k, 1)));
+        speed->SetValue(
+            k, std::hypot(velocity->GetTypedComponent(k, 0), velocity->GetTypedComponent(k, 1)));
     vtkPointData* pd = grid->GetPointData();
-    for (vtkFloatArray* array : {radius.Get(), velocity.Get(), speed.Get(), omega.Get(), force.Get(),
-                                 contactForce.Get()})
+    for (vtkFloatArray* array :
+         {radius.Get(), velocity.Get(), speed.Get(), omega.Get(), force.Get(), contactForce.Get()})
         pd->AddArray(array);
     if (g.hydro_fx.size() == g.size() && g.hydro_fy.size() == g.size()) {
         auto hydro = floatArray("hydro_force", 3, n);
@@ -206,15 +210,17 @@ vtkSmartPointer<vtkUnstructuredGrid> contactsToVtk(const solver::Snapshot& s) {
                                   points->InsertNextPoint(bx, by, 0.0)};
         lines->InsertNextCell(2, ids);
         normal->SetValue(static_cast<vtkIdType>(k), c.normal_force[k]);
-        tangential->SetValue(static_cast<vtkIdType>(k), k < c.tangential_force.size() ? c.tangential_force[k] : 0.0f);
+        tangential->SetValue(static_cast<vtkIdType>(k),
+                             k < c.tangential_force.size() ? c.tangential_force[k] : 0.0f);
         first->InsertNextValue(c.i[k]);
         second->InsertNextValue(c.j[k]);
     }
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->SetPoints(points);
     grid->SetCells(VTK_LINE, lines);
-    for (vtkDataArray* array : {static_cast<vtkDataArray*>(normal.Get()), static_cast<vtkDataArray*>(tangential.Get()),
-                                static_cast<vtkDataArray*>(first.Get()), static_cast<vtkDataArray*>(second.Get())})
+    for (vtkDataArray* array :
+         {static_cast<vtkDataArray*>(normal.Get()), static_cast<vtkDataArray*>(tangential.Get()),
+          static_cast<vtkDataArray*>(first.Get()), static_cast<vtkDataArray*>(second.Get())})
         grid->GetCellData()->AddArray(array);
     grid->GetCellData()->SetActiveScalars("normal_force");
     addFieldValue(grid->GetFieldData(), "TimeValue", s.time_s);
@@ -238,9 +244,11 @@ vtkSmartPointer<vtkImageData> fluidToVtk(const solver::SnapshotFluid& f) {
     fill(vorticity, f.vorticity);
     fill(solid, f.solid);
     for (vtkIdType k = 0; k < n; ++k)
-        speed->SetValue(k, std::hypot(velocity->GetTypedComponent(k, 0), velocity->GetTypedComponent(k, 1)));
+        speed->SetValue(
+            k, std::hypot(velocity->GetTypedComponent(k, 0), velocity->GetTypedComponent(k, 1)));
     vtkPointData* pd = image->GetPointData();
-    for (vtkFloatArray* array : {velocity.Get(), speed.Get(), pressure.Get(), vorticity.Get(), solid.Get()})
+    for (vtkFloatArray* array :
+         {velocity.Get(), speed.Get(), pressure.Get(), vorticity.Get(), solid.Get()})
         pd->AddArray(array);
     pd->SetActiveVectors("velocity");
     pd->SetActiveScalars("speed");
@@ -251,7 +259,8 @@ vtkSmartPointer<vtkUnstructuredGrid> outlineToVtk(const solver::Snapshot& s) {
     vtkNew<vtkPoints> points;
     points->SetDataTypeToFloat();
     std::vector<vtkIdType> ids;
-    for (const auto& [x, y] : s.outline) ids.push_back(points->InsertNextPoint(x, y, 0.0));
+    for (const auto& [x, y] : s.outline)
+        ids.push_back(points->InsertNextPoint(x, y, 0.0));
     vtkNew<vtkCellArray> cells;
     if (!ids.empty()) cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -269,11 +278,14 @@ solver::SnapshotContacts contactsFromVtk(vtkUnstructuredGrid* contacts) {
     vtkCellData* cd = contacts->GetCellData();
     c.normal_force = column(cd, "normal_force");
     c.tangential_force = column(cd, "tangential_force");
-    for (const float v : column(cd, "i")) c.i.push_back(static_cast<std::int32_t>(v));
-    for (const float v : column(cd, "j")) c.j.push_back(static_cast<std::int32_t>(v));
+    for (const float v : column(cd, "i"))
+        c.i.push_back(static_cast<std::int32_t>(v));
+    for (const float v : column(cd, "j"))
+        c.j.push_back(static_cast<std::int32_t>(v));
     c.wx.assign(c.i.size(), 0.0f);
     c.wy.assign(c.i.size(), 0.0f);
-    for (vtkIdType k = 0; k < contacts->GetNumberOfCells() && k < static_cast<vtkIdType>(c.j.size()); ++k) {
+    for (vtkIdType k = 0;
+         k < contacts->GetNumberOfCells() && k < static_cast<vtkIdType>(c.j.size()); ++k) {
         if (c.j[static_cast<std::size_t>(k)] >= 0) continue;
         double p[3];
         contacts->GetPoint(contacts->GetCell(k)->GetPointId(1), p);

@@ -72,13 +72,15 @@ int VtkRunReader::frameNearestTime(double time_s) const {
 
 solver::Snapshot VtkRunReader::read(int frame) const {
     if (frame < 0 || frame >= frameCount())
-        throw solver::InputError("frame " + std::to_string(frame) + " does not exist; the run has " +
-                                 std::to_string(frameCount()) + " frames (0.." +
-                                 std::to_string(frameCount() - 1) + ")");
+        throw solver::InputError("frame " + std::to_string(frame) +
+                                 " does not exist; the run has " + std::to_string(frameCount()) +
+                                 " frames (0.." + std::to_string(frameCount() - 1) + ")");
     const std::string particlesFile = m_frames[static_cast<std::size_t>(frame)].file;
     const auto particles = readGrid(m_dir + "/" + particlesFile, true);
-    const auto contacts = readGrid(m_dir + "/" + siblingFile(particlesFile, "contacts", "vtu"), false);
-    const auto outline = readGrid(m_dir + "/" + siblingFile(particlesFile, "outline", "vtu"), false);
+    const auto contacts =
+        readGrid(m_dir + "/" + siblingFile(particlesFile, "contacts", "vtu"), false);
+    const auto outline =
+        readGrid(m_dir + "/" + siblingFile(particlesFile, "outline", "vtu"), false);
     vtkSmartPointer<vtkImageData> fluid;
     const std::string fluidPath = m_dir + "/" + siblingFile(particlesFile, "fluid", "vti");
     if (std::filesystem::exists(fluidPath)) {

@@ -21,7 +21,9 @@ public:
     /// Number of complete frames.
     int frameCount() const { return static_cast<int>(m_frames.size()); }
     /// Time [s] of frame `frame`.
-    double frameTime(int frame) const { return m_frames.at(static_cast<std::size_t>(frame)).time_s; }
+    double frameTime(int frame) const {
+        return m_frames.at(static_cast<std::size_t>(frame)).time_s;
+    }
     /// The frame whose time is nearest to `time_s`; throws solver::InputError when there is none.
     int frameNearestTime(double time_s) const;
     /// Rebuilds the Snapshot of frame `frame` from its files.

@@ -54,11 +54,14 @@ VtkRunWriter::VtkRunWriter(const std::string& runDir, bool resume, double keepUn
     std::error_code error;
     std::filesystem::create_directories(m_dir, error);
     if (error) throw std::runtime_error("cannot create " + m_dir + ": " + error.message());
-    for (PvdSeries* series : {&m_particles, &m_contacts, &m_fluid, &m_outline}) series->dropAfter(keepUntilS);
+    for (PvdSeries* series : {&m_particles, &m_contacts, &m_fluid, &m_outline})
+        series->dropAfter(keepUntilS);
     m_frame = static_cast<int>(m_particles.entries().size());
 }
 
-int VtkRunWriter::write(const solver::Snapshot& snapshot) { return write(snapshot, m_frame); }
+int VtkRunWriter::write(const solver::Snapshot& snapshot) {
+    return write(snapshot, m_frame);
+}
 
 int VtkRunWriter::write(const solver::Snapshot& snapshot, int frame) {
     const double t = snapshot.time_s;

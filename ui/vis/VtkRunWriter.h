@@ -19,7 +19,8 @@ public:
     /// Writes into `runDir`/vtk (created if needed); `resume` keeps the existing .pvd entries up
     /// to time `keepUntilS` (those after it were written after the checkpoint the run resumes
     /// from, and are written again) and continues the frame numbering after them.
-    explicit VtkRunWriter(const std::string& runDir, bool resume = false, double keepUntilS = 1e300);
+    explicit VtkRunWriter(const std::string& runDir, bool resume = false,
+                          double keepUntilS = 1e300);
 
     /// Writes one frame numbered after the previous one; returns its number (NNNNNN in the names).
     int write(const solver::Snapshot& snapshot);
@@ -37,7 +38,8 @@ private:
     int m_frame = 0;
 };
 
-/// The file name of frame `frame` of `series` with extension `extension`, e.g. particles_000012.vtu.
+/// The file name of frame `frame` of `series` with extension `extension`, e.g.
+/// particles_000012.vtu.
 std::string vtkFrameFileName(const std::string& series, int frame, const std::string& extension);
 
 } // namespace lbdem::vis

@@ -25,9 +25,13 @@ WallLayer::WallLayer()
 
 WallLayer::~WallLayer() = default;
 
-void WallLayer::addTo(vtkRenderer* renderer) { renderer->AddActor(m_actor); }
+void WallLayer::addTo(vtkRenderer* renderer) {
+    renderer->AddActor(m_actor);
+}
 
-void WallLayer::setDepth(double z) { m_actor->SetPosition(0, 0, z); }
+void WallLayer::setDepth(double z) {
+    m_actor->SetPosition(0, 0, z);
+}
 
 void WallLayer::update(const solver::Snapshot& snapshot) {
     vtkNew<vtkPoints> points;
