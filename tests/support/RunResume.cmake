@@ -3,7 +3,7 @@
 # wall-time fields) and VTK series as an uninterrupted run, each output time once, profiles/ one
 # outline per output; a short submerged run also writes the failure-plane pore pressure. Usage: cmake -DLBDEM=... -DCASE=...
 # -DOUT=... -P this.
-file(REMOVE_RECURSE "${OUT}" "${OUT}_wet" "${OUT}_whole" "${OUT}_checkpoint_at_1_25.h5")
+file(REMOVE_RECURSE "${OUT}" "${OUT}_wet" "${OUT}_whole" "${OUT}_checkpoint_at_1_75.h5")
 
 # Fails unless FILE starts with HEADER and has at least MIN_ROWS further lines, each matching ROW.
 function(expect_csv file header min_rows row)
@@ -27,9 +27,9 @@ function(expect_csv file header min_rows row)
 endfunction()
 # A length in metres within the 0.2 m x 0.1 m domain (non-negative, below 1), as %.7g/%.9g writes it.
 set(metre "(0|0\\.[0-9]+|[1-9](\\.[0-9]+)?e-0[0-9])")
-# Dry, on a flat floor: the kinetic energy peaks at 1.25 tau_c (0.068 E_p0; 0.061 at 1.5).
+# Dry, on a flat floor: the kinetic energy peaks at 1.75 tau_c (0.066 E_p0; 0.060 at 2).
 set(small --set grains.count=150 --set grains.packing=0.79 --set fluid.enabled=false --set domain.slope_deg=0
-    --set run.end_tc=1.5 --set run.output_interval_tc=0.25 --set output.checkpoint_interval_tc=0.5)
+    --set run.end_tc=2 --set run.output_interval_tc=0.25 --set output.checkpoint_interval_tc=0.5)
 
 # Runs lbdem with ARGN and fails on a non-zero exit.
 function(lbdem_ok what)
@@ -48,17 +48,17 @@ function(summary_without_wall_time dir result)
     set(${result} "${json}" PARENT_SCOPE)
 endfunction()
 
-# A run killed after its kinetic-energy peak: it stops at the peak, 1.25 tau_c (checkpoint), goes
-# on to its end at 1.5 tau_c (output written), then its checkpoint goes back to the one at 1.25
-# tau_c (as if killed at 1.5 just before its last checkpoint), and it is resumed to the end.
-lbdem_ok("run to 1.25 tau_c" run "${CASE}" --out "${OUT}" --until-tc 1.25 --quiet ${small})
+# A run killed after its kinetic-energy peak: it stops at the peak, 1.75 tau_c (checkpoint), goes
+# on to its end at 2 tau_c (output written), then its checkpoint goes back to the one at 1.75
+# tau_c (as if killed at 2 just before its last checkpoint), and it is resumed to the end.
+lbdem_ok("run to 1.75 tau_c" run "${CASE}" --out "${OUT}" --until-tc 1.75 --quiet ${small})
 file(READ "${OUT}/summary.json" summary)
 if(NOT summary MATCHES "\"finished\": false")
-    message(FATAL_ERROR "a run stopped at 1.25 tau_c must not be finished: ${summary}")
+    message(FATAL_ERROR "a run stopped at 1.75 tau_c must not be finished: ${summary}")
 endif()
-file(COPY_FILE "${OUT}/checkpoint.h5" "${OUT}_checkpoint_at_1_25.h5")
-lbdem_ok("resume to 1.5 tau_c" resume "${OUT}" --quiet)
-file(COPY_FILE "${OUT}_checkpoint_at_1_25.h5" "${OUT}/checkpoint.h5")
+file(COPY_FILE "${OUT}/checkpoint.h5" "${OUT}_checkpoint_at_1_75.h5")
+lbdem_ok("resume to 2 tau_c" resume "${OUT}" --quiet)
+file(COPY_FILE "${OUT}_checkpoint_at_1_75.h5" "${OUT}/checkpoint.h5")
 file(WRITE "${OUT}/checkpoint.h5.tmp.999999" "left by a killed writer")
 lbdem_ok("resume to the end" resume "${OUT}" --quiet)
 if(EXISTS "${OUT}/checkpoint.h5.tmp.999999")
@@ -78,8 +78,8 @@ foreach(until "" "--until-tc;0.5")
 endforeach()
 file(STRINGS "${OUT}/timeseries.csv" rows)
 list(LENGTH rows count)
-if(NOT count EQUAL 8) # header + t/tc = 0, 0.25, ..., 1.5
-    message(FATAL_ERROR "expected 8 lines in timeseries.csv, got ${count}:\n${rows}")
+if(NOT count EQUAL 10) # header + t/tc = 0, 0.25, ..., 2
+    message(FATAL_ERROR "expected 10 lines in timeseries.csv, got ${count}:\n${rows}")
 endif()
 # The same run without the stops writes the same timeseries.csv byte for byte (the five-output
 # mean of the base stress included), the same summary.json but for its wall-time fields (the
@@ -101,7 +101,7 @@ if(NOT resumedSummary STREQUAL wholeSummary)
                         "${resumedSummary}\n---\n${wholeSummary}")
 endif()
 string(JSON peakTime GET "${wholeSummary}" t_ke_peak_over_tc)
-if(peakTime GREATER 1.3)
+if(peakTime GREATER 1.8)
     message(FATAL_ERROR "the kinetic-energy peak (t/tc = ${peakTime}) must come before the resume point")
 endif()
 file(GLOB series RELATIVE "${OUT}_whole/vtk" "${OUT}_whole/vtk/*.pvd")
@@ -119,11 +119,11 @@ foreach(pvd IN LISTS series)
         message(FATAL_ERROR "stopped and resumed, vtk/${pvd} differs:\n${resumedPvd}\n---\n${wholePvd}")
     endif()
 endforeach()
-foreach(index 000000 000001 000002 000003 000004 000005 000006)
+foreach(index 000000 000001 000002 000003 000004 000005 000006 000007 000008)
     expect_csv("${OUT}/profiles/outline_${index}.csv" "x_m,y_m" 4 "^${metre},${metre}$")
 endforeach()
-if(EXISTS "${OUT}/profiles/outline_000007.csv" OR EXISTS "${OUT}/profiles/pore_pressure_failure_plane_000000.csv")
-    message(FATAL_ERROR "a dry run to 1.5 tau_c writes outlines 0 to 6 and no pore pressure")
+if(EXISTS "${OUT}/profiles/outline_000009.csv" OR EXISTS "${OUT}/profiles/pore_pressure_failure_plane_000000.csv")
+    message(FATAL_ERROR "a dry run to 2 tau_c writes outlines 0 to 8 and no pore pressure")
 endif()
 
 # Submerged, coarse and short: the pore pressure along the failure plane at each output.
@@ -146,5 +146,5 @@ list(LENGTH rows fluidPoints)
 if(fluidPoints LESS 8)
     message(FATAL_ERROR "only ${fluidPoints} of 64 failure-plane points carry a pressure after 0.25 tau_c")
 endif()
-message(STATUS "ok: run to 1.25 tau_c, on to 1.5, back to 1.25 and resumed to 1.5: same series, summary and .pvd; "
+message(STATUS "ok: run to 1.75 tau_c, on to 2, back to 1.75 and resumed to 2: same series, summary and .pvd; "
                "submerged: ${fluidPoints} of 64 failure-plane points in the fluid")
