@@ -177,8 +177,9 @@ std::vector<VerificationResult> columnRest(const VerificationOptions& options) {
             const ColumnRest rest = columnAtRest(m, resolution, options.threads);
             // The floor alone carries more than the buoyant weight: the column, deposited dry,
             // expands a little as buoyancy unloads it, and the frictional back wall and gate hold
-            // it down (about +20 %, the same as dry). The balance that shows whether the fluid
-            // pushes or pulls is the walls' whole support against the buoyant weight.
+            // it down (+33 % with the default wall rolling resistance). The balance that shows
+            // whether the fluid pushes or pulls is the walls' whole support against the buoyant
+            // weight.
             VerificationResult floor =
                 compareRelative("column-at-rest",
                                 formatQuantity("walls' support normal to the floor / buoyant "
