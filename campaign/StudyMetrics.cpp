@@ -1,49 +1,36 @@
-// Study metrics: the scenes' declared metrics plus the numbers RunDriver writes into summary.json.
-#include "app/cli/StudyMetrics.h"
+// Study metrics: the scenes' declared metrics plus the numbers io writes into summary.json.
+#include "campaign/StudyMetrics.h"
 
 #include "solver/core/InputError.h"
 #include "solver/core/TextDistance.h"
+#include "solver/io/RunSummary.h"
 #include "solver/scene/SceneKind.h"
 #include "solver/scene/SceneMetrics.h"
 
-#include <vector>
-
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
-using solver::SceneKind;
-
-/// The numbers RunDriver::writeSummary puts at the top level of summary.json, and those it adds
-/// to "final" beside the scene's metrics.
-std::vector<std::string> driverNumbers(const solver::CaseSpec& spec) {
-    std::vector<std::string> names{"steps", "t_over_tc", "wall_s", "mlups", "t_s", "step"};
-    if (solver::sceneFromName(spec.scene) == SceneKind::ColumnCollapse)
-        names.insert(names.end(),
-                     {"runout_final", "packing_final", "ke_peak", "t_ke_peak_over_tc"});
-    return names;
+/// True when a run of spec reports name in its summary.json.
+bool reported(const solver::CaseSpec& spec, const std::string& name) {
+    for (const auto& number : io::runSummaryNumbers(spec))
+        if (number == name) return true;
+    for (const auto& decl : solver::sceneMetrics(spec))
+        if (decl.name == name) return true;
+    return false;
 }
 
 } // namespace
 
 std::string defaultStudyMetric(const solver::CaseSpec& spec) {
-    switch (solver::sceneFromName(spec.scene)) {
-    case SceneKind::Poiseuille:
-        return "l2_error";
-    case SceneKind::TaylorGreen:
-        return "decay_rate_1_s";
-    case SceneKind::Cavity:
-        return solver::ghiaReferenceApplies(spec) ? "ghia_max_deviation" : "max_mach";
-    case SceneKind::Cylinder:
-        return "drag_coefficient";
-    default:
-        return "runout_final";
-    }
+    const auto& decl = solver::sceneDecl(solver::sceneFromName(spec.scene));
+    return decl.studyFallback.empty() || reported(spec, decl.studyMetric) ? decl.studyMetric
+                                                                          : decl.studyFallback;
 }
 
 StudyMetric resolveStudyMetric(const solver::CaseSpec& spec, const std::string& name) {
     const std::string bare = name.rfind("final.", 0) == 0 ? name.substr(6) : name;
-    std::vector<std::string> known = driverNumbers(spec);
+    std::vector<std::string> known = io::runSummaryNumbers(spec);
     for (const auto& candidate : known)
         if (candidate == bare) return {bare, false, false};
     for (const auto& decl : solver::sceneMetrics(spec)) {
@@ -58,8 +45,4 @@ StudyMetric resolveStudyMetric(const solver::CaseSpec& spec, const std::string& 
                              (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
 }
 
-bool isResolutionKey(const std::string& key) {
-    return key == "flow.nodes" || key == "fluid.resolution";
-}
-
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -1,6 +1,6 @@
 // The run loop of `lbdem run` and `lbdem resume`.
 #include "app/cli/RunDriver.h"
-#include "app/cli/Duration.h"
+#include "campaign/Duration.h"
 
 #include "solver/core/InputError.h"
 #include "solver/io/CaseWriter.h"
@@ -122,10 +122,11 @@ void RunDriver::reportProgress(double wallSeconds, bool last) {
     const double mlups = rate * plan.nx * static_cast<double>(plan.ny) / 1e6;
     const double endTc = m_options.until_tc > 0 ? m_options.until_tc : plan.end_time_s / plan.tc_s;
     const double remainingSteps = (endTc - m_simulation.timeOverTc()) * plan.tc_s / plan.dt_s;
-    std::fprintf(stderr, "\rt/tc %7.3f / %.3g  step %lld  %.0f steps/s  %.1f MLUPS  ETA %s   %s",
-                 m_simulation.timeOverTc(), endTc, m_simulation.stepIndex(), rate, mlups,
-                 formatDuration(rate > 0 ? std::max(0.0, remainingSteps) / rate : 0).c_str(),
-                 last ? "\n" : "");
+    std::fprintf(
+        stderr, "\rt/tc %7.3f / %.3g  step %lld  %.0f steps/s  %.1f MLUPS  ETA %s   %s",
+        m_simulation.timeOverTc(), endTc, m_simulation.stepIndex(), rate, mlups,
+        campaign::formatDuration(rate > 0 ? std::max(0.0, remainingSteps) / rate : 0).c_str(),
+        last ? "\n" : "");
     std::fflush(stderr);
     p.lineOpen = !last;
 }
