@@ -2,7 +2,7 @@
 #include "app/cli/CaseOptions.h"
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
-#include "app/cli/RunFolder.h"
+#include "campaign/RunFolder.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/PlanJson.h"
 #include "solver/scene/Plan.h"
@@ -36,7 +36,7 @@ void runInfo(const InfoOptions& options) {
     std::cout << "Case '" << spec.name << "' (scene " << spec.scene << ")\n"
               << io::formatPlan(plan);
     // Would it fit here? (lbdem run refuses what does not, unless --force.)
-    for (const auto& problem : resourceProblems(plan, "results/" + spec.name))
+    for (const auto& problem : campaign::resourceProblems(plan, "results/" + spec.name))
         std::cout << "warning: " << problem << "\n";
 }
 

@@ -4,8 +4,8 @@
 #include "app/cli/Commands.h"
 #include "app/cli/ProfileSink.h"
 #include "app/cli/RunDriver.h"
-#include "app/cli/RunFolder.h"
 #include "app/cli/RunSinks.h"
+#include "campaign/RunFolder.h"
 #include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/CaseWriter.h"
@@ -84,12 +84,12 @@ void runCase(const RunOptions& options) {
     const solver::CaseSpec spec = options.caseOptions.load();
     const solver::Plan plan = solver::makePlan(spec);
     const fs::path dir = options.out.empty() ? "results/" + spec.name : options.out;
-    refuseExistingRun(dir, options.force);
-    checkResources(plan, dir, options.force, options.quiet);
+    campaign::refuseExistingRun(dir, options.force);
+    campaign::checkResources(plan, dir, options.force, options.quiet);
     applyThreads(spec);
     const auto simulation = buildSimulation(
         spec, plan, options.caseOptions.path.empty() ? "the case" : options.caseOptions.path);
-    prepareRunFolder(dir, options.force);
+    campaign::prepareRunFolder(dir, options.force);
     io::writeCase(spec, (dir / "case.toml").string());
     io::writeFileAtomically((dir / "plan.json").string(), io::planToJson(plan).dump(2) + "\n");
     if (!options.quiet)
@@ -107,7 +107,7 @@ void resumeCase(const RunOptions& options) {
     if (!fs::exists(checkpoint))
         throw solver::InputError(
             checkpoint.string() + ": no checkpoint to resume from; " +
-            (holdsRun(dir)
+            (campaign::holdsRun(dir)
                  ? "the run was stopped before it wrote one (at t = 0); start it again with "
                    "lbdem run CASE --out " +
                        dir.string() + " --force"

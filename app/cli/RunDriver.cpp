@@ -1,14 +1,13 @@
 // The run loop of `lbdem run` and `lbdem resume`.
 #include "app/cli/RunDriver.h"
-#include "app/cli/Duration.h"
+#include "campaign/Duration.h"
 
 #include "solver/core/InputError.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/Checkpoint.h"
 #include "solver/io/PlanJson.h"
+#include "solver/io/RunSummary.h"
 #include "solver/io/TimeSeriesWriter.h"
-
-#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -110,49 +109,7 @@ void RunDriver::writeCheckpoint() {
 
 void RunDriver::writeSummary(bool finished, const std::string& stopReason) {
     accountWork();
-    const auto& plan = m_simulation.plan();
-    const auto& diagnostics = m_simulation.runDiagnostics();
-    const double wallSeconds = diagnostics.wallSeconds();
-    const double steps = static_cast<double>(diagnostics.stepsTimed());
-    const double nodes = static_cast<double>(plan.nx) * plan.ny;
-    const auto& last = diagnostics.lastMetrics();
-    nlohmann::json summary{
-        {"case", m_simulation.spec().name},
-        {"finished", finished},
-        {"scene", m_simulation.spec().scene},
-        {"plan",
-         {{"h", plan.h_m},
-          {"dt", plan.dt_s},
-          {"tau", plan.tau},
-          {"mach", plan.mach},
-          {"nx", plan.nx},
-          {"ny", plan.ny},
-          {"substeps", plan.substeps}}},
-        {"steps", m_simulation.stepIndex()},
-        {"t_over_tc", m_simulation.timeOverTc()},
-        {"wall_s", wallSeconds},
-        {"mlups", wallSeconds > 0 ? nodes * steps / wallSeconds / 1e6 : 0.0},
-        {"final", last},
-    };
-    auto final = [&](const char* metric) {
-        const auto found = last.find(metric);
-        return found == last.end() ? nlohmann::json(nullptr) : nlohmann::json(found->second);
-    };
-    summary["runout_final"] = final("runout_normalised");
-    summary["packing_final"] = final("packing_fraction");
-    summary["ke_peak"] = diagnostics.kePeak();
-    summary["t_ke_peak_over_tc"] = diagnostics.tKePeakOverTc();
-    // Where the time went, per stage of the step, over every process of the run (outputs are
-    // not counted). wall_s, mlups and stage_seconds are the only figures that depend on the
-    // machine.
-    nlohmann::json stages = nlohmann::json::object();
-    const auto stageSeconds = diagnostics.stageSeconds();
-    for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k)
-        stages[std::string(solver::stageName(static_cast<solver::Stage>(k)))] =
-            k < stageSeconds.size() ? stageSeconds[k] : 0.0;
-    summary["stage_seconds"] = stages;
-    if (!stopReason.empty()) summary["stop_reason"] = stopReason;
-    io::writeFileAtomically((m_options.dir / "summary.json").string(), summary.dump(2) + "\n");
+    io::writeRunSummary(m_options.dir, m_simulation, finished, stopReason);
 }
 
 void RunDriver::reportProgress(double wallSeconds, bool last) {
@@ -165,10 +122,11 @@ void RunDriver::reportProgress(double wallSeconds, bool last) {
     const double mlups = rate * plan.nx * static_cast<double>(plan.ny) / 1e6;
     const double endTc = m_options.until_tc > 0 ? m_options.until_tc : plan.end_time_s / plan.tc_s;
     const double remainingSteps = (endTc - m_simulation.timeOverTc()) * plan.tc_s / plan.dt_s;
-    std::fprintf(stderr, "\rt/tc %7.3f / %.3g  step %lld  %.0f steps/s  %.1f MLUPS  ETA %s   %s",
-                 m_simulation.timeOverTc(), endTc, m_simulation.stepIndex(), rate, mlups,
-                 formatDuration(rate > 0 ? std::max(0.0, remainingSteps) / rate : 0).c_str(),
-                 last ? "\n" : "");
+    std::fprintf(
+        stderr, "\rt/tc %7.3f / %.3g  step %lld  %.0f steps/s  %.1f MLUPS  ETA %s   %s",
+        m_simulation.timeOverTc(), endTc, m_simulation.stepIndex(), rate, mlups,
+        campaign::formatDuration(rate > 0 ? std::max(0.0, remainingSteps) / rate : 0).c_str(),
+        last ? "\n" : "");
     std::fflush(stderr);
     p.lineOpen = !last;
 }

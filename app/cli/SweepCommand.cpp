@@ -1,33 +1,29 @@
-// `lbdem sweep`: many cases as separate processes; skips finished runs, resumes interrupted ones.
+// `lbdem sweep`: the options, and the lines it prints while the campaign library runs many cases
+// as separate processes (skipping finished runs, resuming interrupted ones) and reports them.
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
-#include "app/cli/JobRunner.h"
-#include "app/cli/RunFolder.h"
-#include "app/cli/SweepEnsemble.h"
-#include "app/cli/SweepProgress.h"
-#include "app/cli/SweepReport.h"
-#include "app/cli/SweepSlurm.h"
-#include "solver/core/InputError.h"
-#include "solver/io/CaseLoader.h"
+#include "campaign/JobRunner.h"
+#include "campaign/RunJobs.h"
+#include "campaign/SweepEnsemble.h"
+#include "campaign/SweepProgress.h"
+#include "campaign/SweepReport.h"
+#include "campaign/SweepSlurm.h"
+#include "campaign/figures/SweepFigures.h"
 #include "solver/io/SweepFile.h"
-#include "solver/scene/Plan.h"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <thread>
 
 namespace lbdem::cli {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using namespace campaign;
 
 struct SweepOptions {
     std::string file;
@@ -43,7 +39,7 @@ struct SweepOptions {
 /// Writes the sweep's tables, figures and findings and says what it wrote.
 void report(const std::string& name, const std::vector<SweepEntry>& entries,
             const SweepOptions& options) {
-    const auto result = writeSweepReport(name, entries, options.out);
+    const auto result = writeSweepReport(name, entries, options.out, writeSweepFigures);
     if (!options.quiet)
         for (const auto& path : result.files)
             std::cout << "wrote " << path << "\n";
@@ -57,14 +53,52 @@ std::string reportCommand(const SweepOptions& options) {
            (options.seeds > 0 ? " --seeds " + std::to_string(options.seeds) : "");
 }
 
-bool finishedRun(const fs::path& dir) {
-    std::ifstream file(dir / "summary.json");
-    if (!file) return false;
-    try {
-        return nlohmann::json::parse(file).value("finished", false);
-    } catch (const nlohmann::json::exception&) {
-        return false;
+/// Writes the SLURM job array of the sweep, submits it when sbatch is there, and says so.
+int submitToSlurm(const io::SweepSpec& sweep, const std::vector<SweepRun>& runs,
+                  const SweepOptions& options) {
+    const auto submission = submitSlurmSweep(sweep.name, runs, options.out, options.slurmOptions);
+    std::cout << "wrote " << submission.script << " (" << runs.size() << " tasks)\n";
+    if (!submission.sbatchFound) {
+        std::cout << "sbatch is not on PATH: submit it on the cluster with: sbatch "
+                  << submission.script << "\n"
+                  << "then gather the finished runs with: " << reportCommand(options) << "\n";
+        return kExitOk;
     }
+    if (submission.status != 0) {
+        std::cerr << "lbdem: sbatch " << submission.script << " failed (" << submission.status
+                  << "): " << submission.output;
+        return kExitFailure;
+    }
+    std::cout << "submitted job " << submission.jobId << " (" << runs.size()
+              << " tasks); gather the finished runs with: " << reportCommand(options) << "\n";
+    return kExitOk;
+}
+
+/// The job of each run left to do (skipping finished ones, resuming interrupted ones), saying
+/// which; toRun receives their entries in job order.
+std::vector<Job> jobsToRun(const std::vector<SweepRun>& runs, const SweepOptions& options,
+                           std::vector<SweepEntry>& toRun) {
+    const std::string self = selfExecutable();
+    std::vector<Job> jobs;
+    for (const auto& [entry, casePath, overrides] : runs) {
+        const auto& [spec, dir, seed] = entry;
+        const std::string label = dir.filename().string(); // the case, or the case and its seed
+        Job job{label,
+                {self, "run", casePath, "--out", dir.string(), "--quiet"},
+                (dir / "log.txt").string()};
+        for (const auto& assignment : overrides)
+            job.argv.insert(job.argv.end(), {"--set", assignment});
+        const RunAction action = prepareRunJob(job, dir, false);
+        if (!options.quiet)
+            std::cout << (action == RunAction::Skip     ? "skip    "
+                          : action == RunAction::Resume ? "resume  "
+                                                        : "run     ")
+                      << label << (action == RunAction::Skip ? " (finished)\n" : "\n");
+        if (action == RunAction::Skip) continue;
+        jobs.push_back(std::move(job));
+        toRun.push_back(entry);
+    }
+    return jobs;
 }
 
 int runSweep(const SweepOptions& options) {
@@ -76,41 +110,14 @@ int runSweep(const SweepOptions& options) {
     std::vector<SweepEntry> entries;
     for (const auto& run : runs)
         entries.push_back(run.entry);
-    if (options.slurm)
-        return submitSlurmSweep(sweep.name, runs, out, options.slurmOptions,
-                                reportCommand(options));
+    if (options.slurm) return submitToSlurm(sweep, runs, options);
     if (options.report) {
         report(sweep.name, entries, options);
         return kExitOk;
     }
     fs::create_directories(out);
-    const std::string self = selfExecutable();
-    std::vector<Job> jobs;
     std::vector<SweepEntry> toRun;
-    for (const auto& [entry, casePath, overrides] : runs) {
-        const auto& [spec, dir, seed] = entry;
-        const std::string label = dir.filename().string(); // the case, or the case and its seed
-        if (finishedRun(dir)) {
-            if (!options.quiet) std::cout << "skip    " << label << " (finished)\n";
-            continue;
-        }
-        Job job{label, {self}, (dir / "log.txt").string()};
-        const bool resumable = fs::exists(dir / "checkpoint.h5");
-        const bool stale = !resumable && holdsRun(dir); // a start that failed: nothing to continue
-        fs::create_directories(dir);
-        if (resumable) {
-            job.argv.insert(job.argv.end(), {"resume", dir.string(), "--quiet"});
-            if (!options.quiet) std::cout << "resume  " << label << "\n";
-        } else {
-            job.argv.insert(job.argv.end(), {"run", casePath, "--out", dir.string(), "--quiet"});
-            if (stale) job.argv.push_back("--force");
-            for (const auto& assignment : overrides)
-                job.argv.insert(job.argv.end(), {"--set", assignment});
-            if (!options.quiet) std::cout << "run     " << label << "\n";
-        }
-        jobs.push_back(std::move(job));
-        toRun.push_back(entry);
-    }
+    const std::vector<Job> jobs = jobsToRun(runs, options, toRun);
     std::cout.flush();
     shareCoresBetweenJobs(options.jobs);
     int failures = 0;

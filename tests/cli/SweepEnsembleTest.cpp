@@ -1,8 +1,9 @@
 // Ensembles over packing seeds on a synthetic sweep folder: spread per case, findings seed by seed
 // (with fronts at the domain's end left undecided), the report's files and the banded figures.
-#include "app/cli/SweepEnsemble.h"
-#include "app/cli/SweepFindings.h"
-#include "app/cli/SweepReport.h"
+#include "campaign/SweepEnsemble.h"
+#include "campaign/SweepFindings.h"
+#include "campaign/SweepReport.h"
+#include "campaign/figures/SweepFigures.h"
 #include "solver/core/InputError.h"
 
 #ifdef LBDEM_HAS_VIS
@@ -35,8 +36,9 @@ std::string readText(const fs::path& path) {
 }
 
 /// One run of the synthetic ensemble: packing, slope, medium and seed.
-cli::SweepEntry entry(const fs::path& out, double packing, double slope, bool submerged, int seed) {
-    cli::SweepEntry e;
+campaign::SweepEntry entry(const fs::path& out, double packing, double slope, bool submerged,
+                           int seed) {
+    campaign::SweepEntry e;
     char name[64];
     std::snprintf(name, sizeof name, "%s_%gdeg_%s", packing > 0.81 ? "dense" : "loose", slope,
                   submerged ? "submerged" : "dry");
@@ -53,7 +55,7 @@ cli::SweepEntry entry(const fs::path& out, double packing, double slope, bool su
 /// 1.5 at 0 deg, and at 5 deg 1.9 (seed 1, shorter than dry), 1.95 (seed 2: its front reaches the
 /// domain's end, see initTestCase) and 3.0 (seed 3, longer than dry); loose dry 1.8 + 0.1 slope,
 /// loose submerged 1.6 + 0.1 slope.
-double finalRunout(const cli::SweepEntry& e) {
+double finalRunout(const campaign::SweepEntry& e) {
     const double slope = e.spec.domain.slope_deg;
     if (e.spec.grains.packing > 0.81) {
         if (!e.spec.fluid.enabled) return 2.0 + 0.1 * slope + 0.1 * e.seed;
@@ -63,7 +65,7 @@ double finalRunout(const cli::SweepEntry& e) {
 }
 
 /// timeseries.csv (t/tau_c 0..4, the runout approaching its final value) and summary.json.
-void writeRun(const cli::SweepEntry& e, const char* status) {
+void writeRun(const campaign::SweepEntry& e, const char* status) {
     fs::create_directories(e.dir);
     const double runout = finalRunout(e), initialWidth = 0.05;
     std::ofstream series(e.dir / "timeseries.csv");
@@ -105,8 +107,8 @@ int pixelsNear(vtkImageData* image, int r, int g, int b, int tolerance) {
 }
 #endif
 
-const cli::Finding* findingOf(const std::vector<cli::Finding>& findings,
-                              const std::string& statement, const std::string& where) {
+const campaign::Finding* findingOf(const std::vector<campaign::Finding>& findings,
+                                   const std::string& statement, const std::string& where) {
     for (const auto& f : findings)
         if (f.statement == statement && f.where == where) return &f;
     return nullptr;
@@ -128,8 +130,8 @@ private slots:
 private:
     QTemporaryDir m_dir;
     fs::path m_out;
-    std::vector<cli::SweepEntry> m_entries;
-    cli::SweepReportResult m_result;
+    std::vector<campaign::SweepEntry> m_entries;
+    campaign::SweepReportResult m_result;
 };
 
 void SweepEnsembleTest::initTestCase() {
@@ -148,29 +150,30 @@ void SweepEnsembleTest::initTestCase() {
                     const bool unstable = packing > 0.81 && slope == 0 && submerged && seed == 3;
                     writeRun(e, unstable ? "unstable" : "finished");
                 }
-    m_result = cli::writeSweepReport("ensemble", m_entries, m_out);
+    m_result =
+        campaign::writeSweepReport("ensemble", m_entries, m_out, campaign::writeSweepFigures);
 }
 
 void SweepEnsembleTest::spreadAndInterpolation() {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const auto s = cli::spreadOf({1.0, nan, 2.0, 3.0});
+    const auto s = campaign::spreadOf({1.0, nan, 2.0, 3.0});
     QCOMPARE(s.count, 3);
     QCOMPARE(s.mean, 2.0);
     QCOMPARE(s.sd, 1.0); // sample standard deviation: sqrt((1 + 0 + 1) / 2)
     QCOMPARE(s.min, 1.0);
     QCOMPARE(s.max, 3.0);
-    QVERIFY(std::isnan(cli::spreadOf({4.0}).sd));
-    QCOMPARE(cli::spreadOf({}).count, 0);
-    QCOMPARE(cli::interpolate({0, 1, 2}, {0, 10, 30}, 1.5), 20.0);
-    QCOMPARE(cli::interpolate({0, 1, 2}, {0, 10, 30}, 2.0), 30.0);
-    QVERIFY(std::isnan(cli::interpolate({0, 1, 2}, {0, 10, 30}, 2.5)));
+    QVERIFY(std::isnan(campaign::spreadOf({4.0}).sd));
+    QCOMPARE(campaign::spreadOf({}).count, 0);
+    QCOMPARE(campaign::interpolate({0, 1, 2}, {0, 10, 30}, 1.5), 20.0);
+    QCOMPARE(campaign::interpolate({0, 1, 2}, {0, 10, 30}, 2.0), 30.0);
+    QVERIFY(std::isnan(campaign::interpolate({0, 1, 2}, {0, 10, 30}, 2.5)));
 }
 
 void SweepEnsembleTest::runsOfASweepWithSeeds() {
     io::SweepSpec sweep;
     sweep.cases = {LBDEM_SOURCE_DIR "/sample_cases/paper/loose_0deg_dry.toml"};
     sweep.overrides = {"grains.count=150"};
-    const auto runs = cli::planSweepRuns(sweep, cli::firstSeeds(3), "/tmp/S");
+    const auto runs = campaign::planSweepRuns(sweep, campaign::firstSeeds(3), "/tmp/S");
     QCOMPARE(runs.size(), std::size_t(3));
     for (int k = 0; k < 3; ++k) {
         QCOMPARE(runs[k].entry.dir.string(), "/tmp/S/loose_0deg_dry_s" + std::to_string(k + 1));
@@ -181,29 +184,31 @@ void SweepEnsembleTest::runsOfASweepWithSeeds() {
     }
     io::SweepSpec twice = sweep; // one case name twice: one output folder for two cases
     twice.cases.push_back(sweep.cases.front());
-    QVERIFY_EXCEPTION_THROWN(cli::planSweepRuns(twice, cli::firstSeeds(2), "/tmp/S"),
+    QVERIFY_EXCEPTION_THROWN(campaign::planSweepRuns(twice, campaign::firstSeeds(2), "/tmp/S"),
                              solver::InputError);
-    const auto single = cli::planSweepRuns(sweep, {}, "/tmp/S");
+    const auto single = campaign::planSweepRuns(sweep, {}, "/tmp/S");
     QCOMPARE(single.size(), std::size_t(1));
     QCOMPARE(single[0].entry.dir.string(), std::string("/tmp/S/loose_0deg_dry"));
     QCOMPARE(single[0].entry.seed, 0);
 }
 
 void SweepEnsembleTest::spreadPerCase() {
-    const auto cases = cli::gatherEnsemble(m_entries);
+    const auto cases = campaign::gatherEnsemble(m_entries);
     QCOMPARE(cases.size(), std::size_t(8));
     const auto& denseDry0 = cases[0];
     QCOMPARE(denseDry0.name, std::string("dense_0deg_dry"));
     QCOMPARE(denseDry0.finished, 3);
     const auto& runout =
-        denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::RunoutFinal)];
+        denseDry0.spread[static_cast<std::size_t>(campaign::EnsembleMetric::RunoutFinal)];
     QVERIFY(std::abs(runout.mean - 2.2) < 1e-12 && std::abs(runout.sd - 0.1) < 1e-12);
     QVERIFY(std::abs(runout.min - 2.1) < 1e-12 && std::abs(runout.max - 2.3) < 1e-12);
     // At 3 tau_c the synthetic runout is R (1 - e^-3), between the rows at 3.0 (exactly a row).
-    const auto& at3 = denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::RunoutAt3Tc)];
+    const auto& at3 =
+        denseDry0.spread[static_cast<std::size_t>(campaign::EnsembleMetric::RunoutAt3Tc)];
     QVERIFY(std::abs(at3.mean - 2.2 * (1 - std::exp(-3.0))) < 1e-5);
-    QCOMPARE(denseDry0.spread[static_cast<std::size_t>(cli::EnsembleMetric::FroudeAt3Tc)].count,
-             0); // dry
+    QCOMPARE(
+        denseDry0.spread[static_cast<std::size_t>(campaign::EnsembleMetric::FroudeAt3Tc)].count,
+        0); // dry
     const auto& denseWet0 = cases[1];
     QCOMPARE(denseWet0.finished, 2);
     QCOMPARE(denseWet0.unstable, 1);
@@ -227,7 +232,7 @@ void SweepEnsembleTest::spreadPerCase() {
 }
 
 void SweepEnsembleTest::findingsSeedBySeed() {
-    const auto findings = cli::computeFindings(cli::gatherEnsemble(m_entries));
+    const auto findings = campaign::computeFindings(campaign::gatherEnsemble(m_entries));
     const auto* dense0 = findingOf(findings, "dense: dry runout longer than submerged", "0 deg");
     const auto* dense5 = findingOf(findings, "dense: dry runout longer than submerged", "5 deg");
     QVERIFY(dense0 && dense5);

@@ -1,6 +1,6 @@
 // Sweep progress lines: each running case's t/tau_c read from its timeseries.csv, and an ETA
 // worked out by hand from the paces the synthetic cases are given.
-#include "app/cli/SweepProgress.h"
+#include "campaign/SweepProgress.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -14,8 +14,8 @@ namespace fs = std::filesystem;
 namespace {
 
 /// A case of end_tc 4, with or without fluid, writing into out/name.
-cli::SweepEntry entry(const fs::path& out, const std::string& name, bool fluid) {
-    cli::SweepEntry e;
+campaign::SweepEntry entry(const fs::path& out, const std::string& name, bool fluid) {
+    campaign::SweepEntry e;
     e.spec.name = name;
     e.spec.fluid.enabled = fluid;
     e.spec.run.end_tc = 4;
@@ -40,9 +40,9 @@ private slots:
     void progressIsTheLastRowsTime() {
         QTemporaryDir tmp;
         const fs::path dir = tmp.path().toStdString();
-        QCOMPARE(cli::runProgressTc(dir / "absent"), 0.0);
+        QCOMPARE(campaign::runProgressTc(dir / "absent"), 0.0);
         writeSeries(dir / "case", 1.5);
-        QCOMPARE(cli::runProgressTc(dir / "case"), 1.5);
+        QCOMPARE(campaign::runProgressTc(dir / "case"), 1.5);
     }
 
     void etaFromEachCasesPaceAndItsKinds() {
@@ -50,7 +50,7 @@ private slots:
         const fs::path out = tmp.path().toStdString();
         const auto a = entry(out, "a", true), b = entry(out, "b", true), c = entry(out, "c", false);
         writeSeries(a.dir, 0.5); // a resumed case: its pace counts from 0.5 on
-        cli::SweepProgress progress({a, b, c}, 1, 1);
+        campaign::SweepProgress progress({a, b, c}, 1, 1);
         QCOMPARE(QString::fromStdString(progress.line({{0, 5.0}})),
                  QString("1/4 done; running a t/tc 0.50/4; ETA once a case has run 20s"));
 

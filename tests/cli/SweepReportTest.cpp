@@ -1,5 +1,6 @@
 // The sweep report on a synthetic sweep folder: table rows, Markdown links and the PNG figures.
-#include "app/cli/SweepReport.h"
+#include "campaign/SweepReport.h"
+#include "campaign/figures/SweepFigures.h"
 
 #ifdef LBDEM_HAS_VIS
 #include "tests/render/ImageBaseline.h"
@@ -32,8 +33,8 @@ std::string readText(const fs::path& path) {
 }
 
 /// A case of the synthetic sweep.
-cli::SweepEntry entry(const fs::path& out, double packing, double slope, bool submerged) {
-    cli::SweepEntry e;
+campaign::SweepEntry entry(const fs::path& out, double packing, double slope, bool submerged) {
+    campaign::SweepEntry e;
     char name[64];
     std::snprintf(name, sizeof name, "%s_%gdeg_%s", packing > 0.81 ? "dense" : "loose", slope,
                   submerged ? "submerged" : "dry");
@@ -46,13 +47,13 @@ cli::SweepEntry entry(const fs::path& out, double packing, double slope, bool su
 }
 
 /// The final runout the synthetic case reports: grows with slope, dense dry longest.
-double finalRunout(const cli::SweepEntry& e) {
+double finalRunout(const campaign::SweepEntry& e) {
     return 1.0 + 0.1 * e.spec.domain.slope_deg + (e.spec.grains.packing > 0.81 ? 0.5 : 0.0) -
            (e.spec.fluid.enabled ? 0.3 : 0.0);
 }
 
 /// Writes timeseries.csv (t/tau_c 0..4) and summary.json of one case as `lbdem run` would.
-void writeCase(const cli::SweepEntry& e, bool finished) {
+void writeCase(const campaign::SweepEntry& e, bool finished) {
     fs::create_directories(e.dir);
     const double runout = finalRunout(e);
     std::ofstream series(e.dir / "timeseries.csv");
@@ -103,13 +104,13 @@ private slots:
 private:
     QTemporaryDir m_dir;
     fs::path m_out;
-    cli::SweepReportResult m_result;
+    campaign::SweepReportResult m_result;
 };
 
 void SweepReportTest::initTestCase() {
     QVERIFY(m_dir.isValid());
     m_out = m_dir.path().toStdString();
-    std::vector<cli::SweepEntry> entries;
+    std::vector<campaign::SweepEntry> entries;
     for (const double packing : {0.83, 0.79})
         for (const double slope : {0.0, 5.0})
             for (const bool submerged : {false, true}) {
@@ -123,7 +124,7 @@ void SweepReportTest::initTestCase() {
     entries.push_back(entry(m_out, 0.83, 7.5, true)); // interrupted: summary says not finished
     writeCase(entries.back(), false);
     entries.push_back(entry(m_out, 0.79, 7.5, true)); // never started: no folder
-    m_result = cli::writeSweepReport("synthetic", entries, m_out);
+    m_result = campaign::writeSweepReport("synthetic", entries, m_out, campaign::writeSweepFigures);
 }
 
 void SweepReportTest::tableRows() {

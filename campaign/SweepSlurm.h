@@ -2,13 +2,13 @@
 // with `lbdem sweep FILE --out DIR --report`.
 #pragma once
 
-#include "app/cli/SweepEnsemble.h"
+#include "campaign/SweepEnsemble.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// The resources each task of the job array asks for; empty strings leave SLURM's defaults.
 struct SlurmOptions {
@@ -28,10 +28,18 @@ std::string slurmScript(const std::string& sweepName, const std::vector<SweepRun
                         const std::filesystem::path& out, const std::string& lbdem,
                         const SlurmOptions& options);
 
-/// Writes OUT/sweep.sbatch and submits it with sbatch when sbatch is on PATH (else prints how to
-/// submit); prints the command that gathers the report. Returns the exit code of the command.
-int submitSlurmSweep(const std::string& sweepName, const std::vector<SweepRun>& runs,
-                     const std::filesystem::path& out, const SlurmOptions& options,
-                     const std::string& reportCommand);
+/// What submitSlurmSweep did.
+struct SlurmSubmission {
+    std::string script;       ///< OUT/sweep.sbatch
+    bool sbatchFound = false; ///< sbatch is on PATH: the script was handed to it
+    int status = 0;           ///< sbatch's exit status (0: submitted)
+    std::string jobId;        ///< the job id sbatch gave it
+    std::string output;       ///< what sbatch said when it failed
+};
 
-} // namespace lbdem::cli
+/// Writes OUT/sweep.sbatch (tasks start this executable) and submits it with sbatch when sbatch
+/// is on PATH.
+SlurmSubmission submitSlurmSweep(const std::string& sweepName, const std::vector<SweepRun>& runs,
+                                 const std::filesystem::path& out, const SlurmOptions& options);
+
+} // namespace lbdem::campaign

@@ -1,15 +1,15 @@
 // Progress of a running sweep: each running case's t/tau_c and an estimate of the time left.
 #pragma once
 
-#include "app/cli/JobRunner.h"
-#include "app/cli/SweepReport.h"
+#include "campaign/JobRunner.h"
+#include "campaign/SweepReport.h"
 
 #include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// How far the run in dir has got: t/tau_c of the last row of its timeseries.csv (0 if none).
 double runProgressTc(const std::filesystem::path& dir);
@@ -49,4 +49,4 @@ private:
     int m_skipped;
 };
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// One command to run: argv (argv[0] is the program path) and a file for its output.
 struct Job {
@@ -46,4 +46,4 @@ void shareCoresBetweenJobs(int maxParallel);
 /// Path of the running executable (to start lbdem itself as a child).
 std::string selfExecutable();
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

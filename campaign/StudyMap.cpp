@@ -1,9 +1,9 @@
 // Study map (Markdown) from the rows of a study over two or more keys.
-#include "app/cli/StudyMap.h"
+#include "campaign/StudyMap.h"
 
 #include "solver/io/CaseWriter.h"
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
@@ -51,4 +51,4 @@ std::string writeStudyMap(const StudySpec& study, const std::vector<StudyRow>& r
     return path;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -2,13 +2,13 @@
 // each one holds, at each slope.
 #pragma once
 
-#include "app/cli/SweepEnsemble.h"
+#include "campaign/SweepEnsemble.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// One finding at one slope (or over all slopes) and how many seeds support it.
 struct Finding {
@@ -42,4 +42,4 @@ struct SweepEnsembleReport {
 SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries,
                                         const std::filesystem::path& out);
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -1,18 +1,16 @@
 // The SLURM job-array script of a sweep and its submission with sbatch.
-#include "app/cli/SweepSlurm.h"
+#include "campaign/SweepSlurm.h"
 
-#include "app/cli/Cli.h"
-#include "app/cli/JobRunner.h"
+#include "campaign/JobRunner.h"
 #include "solver/io/CaseWriter.h"
 
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
 #include <regex>
 #include <sstream>
 #include <unistd.h>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace fs = std::filesystem;
 
@@ -110,32 +108,26 @@ std::string slurmScript(const std::string& sweepName, const std::vector<SweepRun
     return text;
 }
 
-int submitSlurmSweep(const std::string& sweepName, const std::vector<SweepRun>& runs,
-                     const fs::path& out, const SlurmOptions& options,
-                     const std::string& reportCommand) {
+SlurmSubmission submitSlurmSweep(const std::string& sweepName, const std::vector<SweepRun>& runs,
+                                 const fs::path& out, const SlurmOptions& options) {
     fs::create_directories(out / "slurm");
+    SlurmSubmission submission;
     const fs::path script = out / "sweep.sbatch";
+    submission.script = script.string();
     io::writeFileAtomically(script.string(),
                             slurmScript(sweepName, runs, out, selfExecutable(), options));
     fs::permissions(script, fs::perms::owner_exec, fs::perm_options::add);
-    std::cout << "wrote " << script.string() << " (" << runs.size() << " tasks)\n";
     const std::string sbatch = onPath("sbatch");
-    if (sbatch.empty()) {
-        std::cout << "sbatch is not on PATH: submit it on the cluster with: sbatch "
-                  << script.string() << "\n"
-                  << "then gather the finished runs with: " << reportCommand << "\n";
-        return kExitOk;
-    }
+    if (sbatch.empty()) return submission;
+    submission.sbatchFound = true;
     const auto [output, status] =
         capture(quoted(sbatch) + " --parsable " + quoted(script.string()));
-    if (status != 0) {
-        std::cerr << "lbdem: sbatch " << script.string() << " failed (" << status
-                  << "): " << output;
-        return kExitFailure;
-    }
-    std::cout << "submitted job " << output.substr(0, output.find_first_of(";\n")) << " ("
-              << runs.size() << " tasks); gather the finished runs with: " << reportCommand << "\n";
-    return kExitOk;
+    submission.status = status;
+    if (status != 0)
+        submission.output = output;
+    else
+        submission.jobId = output.substr(0, output.find_first_of(";\n"));
+    return submission;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

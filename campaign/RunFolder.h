@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// True when dir holds the outputs of a run (case.toml, plan.json, summary.json,
 /// timeseries.csv or checkpoint.h5).
@@ -34,4 +34,4 @@ void checkResources(const solver::Plan& plan, const std::filesystem::path& dir, 
 /// A byte count for people: "812 MiB", "26.1 GiB".
 std::string formatBytes(double bytes);
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

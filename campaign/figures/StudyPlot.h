@@ -2,12 +2,12 @@
 // (one series per value of the first key when more than one key is varied).
 #pragma once
 
-#include "app/cli/StudyReport.h"
+#include "campaign/StudyReport.h"
 
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// True when this build can draw study.png (built with VTK, LBDEM_GUI=ON).
 bool studyPlotAvailable();
@@ -18,4 +18,4 @@ bool studyPlotAvailable();
 bool writeStudyPlot(const StudySpec& study, const std::vector<StudyRow>& rows,
                     const std::string& path);
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

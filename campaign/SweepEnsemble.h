@@ -2,7 +2,7 @@
 // each case's figures over its seeds.
 #pragma once
 
-#include "app/cli/SweepReport.h"
+#include "campaign/SweepReport.h"
 #include "solver/io/SweepFile.h"
 
 #include <array>
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// One run of a sweep: its case, seed and folder, and how `lbdem run` starts it.
 struct SweepRun {
@@ -89,4 +89,4 @@ std::vector<EnsembleCase> gatherEnsemble(const std::vector<SweepEntry>& entries)
 std::string ensembleCsv(const std::vector<EnsembleCase>& cases);
 std::string ensembleMarkdown(const std::vector<EnsembleCase>& cases);
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -1,6 +1,6 @@
 // Progress lines of `lbdem sweep`, from the timeseries.csv each case writes as it goes.
-#include "app/cli/SweepProgress.h"
-#include "app/cli/Duration.h"
+#include "campaign/SweepProgress.h"
+#include "campaign/Duration.h"
 
 #include "solver/io/TimeSeriesWriter.h"
 
@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
@@ -110,4 +110,4 @@ std::string SweepProgress::line(const std::vector<RunningJob>& running) {
     return text;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -1,6 +1,6 @@
 // Output-folder checks of `lbdem run`: an existing run is never replaced silently, a run that
 // cannot fit in memory or on disk is refused before it starts.
-#include "app/cli/RunFolder.h"
+#include "campaign/RunFolder.h"
 
 #include "solver/core/InputError.h"
 
@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <iostream>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace fs = std::filesystem;
 
@@ -108,4 +108,4 @@ void checkResources(const solver::Plan& plan, const fs::path& dir, bool force, b
     }
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

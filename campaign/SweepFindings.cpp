@@ -1,7 +1,7 @@
 // The paper's findings, seed by seed, from the ensemble of a sweep.
-#include "app/cli/SweepFindings.h"
+#include "campaign/SweepFindings.h"
 
-#include "app/cli/SweepFigures.h"
+#include "campaign/SweepFigureCase.h"
 #include "solver/io/CaseWriter.h"
 
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <functional>
 #include <set>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
@@ -251,4 +251,4 @@ SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries,
     return report;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -1,5 +1,5 @@
 // Study figure with lbdem::vis line charts (log-log axes, points labelled with the settings).
-#include "app/cli/StudyPlot.h"
+#include "campaign/figures/StudyPlot.h"
 
 #ifdef LBDEM_HAS_VIS
 #include "ui/vis/LineChart.h"
@@ -7,7 +7,7 @@
 #include <algorithm>
 #endif
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 bool studyPlotAvailable() {
 #ifdef LBDEM_HAS_VIS
@@ -62,4 +62,4 @@ bool writeStudyPlot(const StudySpec& study, const std::vector<StudyRow>& rows,
 #endif
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// A metric a study reads from each run's summary.json, resolved before any run starts.
 struct StudyMetric {
@@ -14,17 +14,12 @@ struct StudyMetric {
     bool isError = false;  ///< the metric is itself an error against that reference
 };
 
-/// The metric a study of spec reads when --metric is not given: poiseuille l2_error,
-/// taylor_green decay_rate_1_s, cavity ghia_max_deviation (max_mach when Re is not 100),
-/// cylinder drag_coefficient, column_collapse runout_final.
+/// The metric a study of spec reads when --metric is not given: the one its scene declares
+/// (solver::sceneDecl), or the scene's fallback when the run would not report that one.
 std::string defaultStudyMetric(const solver::CaseSpec& spec);
 
 /// Resolve name (optionally written final.NAME) for a run of spec; throws InputError naming the
 /// nearest known metric when the run's summary.json would not hold it.
 StudyMetric resolveStudyMetric(const solver::CaseSpec& spec, const std::string& name);
 
-/// True when key sets the lattice resolution (flow.nodes, fluid.resolution): a study over it
-/// reports the observed order of convergence.
-bool isResolutionKey(const std::string& key);
-
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

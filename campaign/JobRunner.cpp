@@ -1,5 +1,5 @@
 // Child processes with posix_spawn, output redirected to a log file per job.
-#include "app/cli/JobRunner.h"
+#include "campaign/JobRunner.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +15,7 @@
 
 extern char** environ;
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
@@ -109,4 +109,4 @@ void shareCoresBetweenJobs(int maxParallel) {
                  1);
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

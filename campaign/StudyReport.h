@@ -1,14 +1,15 @@
 // The table and figure of a study: each setting's metric, its error, wall time and MLUPS.
 #pragma once
 
-#include "app/cli/StudyMetrics.h"
+#include "campaign/StudyMetrics.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// What the error of each setting is measured against.
 enum class StudyReference {
@@ -82,4 +83,20 @@ std::vector<std::string> writeStudyTables(const StudySpec& study, const std::vec
                                           const std::filesystem::path& out, bool plotted,
                                           const std::string& plotNote = {});
 
-} // namespace lbdem::cli
+/// Draws the error of each row against its wall time into the PNG file path (study.png); returns
+/// false when it draws nothing. An empty plotter: this build cannot draw.
+using StudyPlotter = std::function<bool(const StudySpec& study, const std::vector<StudyRow>& rows,
+                                        const std::string& path)>;
+
+/// What writeStudyReport wrote.
+struct StudyReportResult {
+    std::vector<std::string> files; ///< study.csv, study.md, study.png when drawn, study_map.md
+    std::string plotNote;           ///< why study.png is not drawn although plot could draw it
+};
+
+/// Tabulate the study from its runs' summary.json: OUT/study.csv and OUT/study.md, OUT/study.png
+/// (drawn by plot) when the errors have a scale, and OUT/study_map.md over two or more keys.
+StudyReportResult writeStudyReport(const StudySpec& study, const std::filesystem::path& out,
+                                   const StudyPlotter& plot);
+
+} // namespace lbdem::campaign

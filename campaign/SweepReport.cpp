@@ -1,8 +1,7 @@
 // Sweep table (CSV and Markdown) from the runs' summaries, and the figures' section.
-#include "app/cli/SweepReport.h"
+#include "campaign/SweepReport.h"
 
-#include "app/cli/SweepFigures.h"
-#include "app/cli/SweepFindings.h"
+#include "campaign/SweepFindings.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/TimeSeriesWriter.h"
 
@@ -14,7 +13,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
@@ -124,6 +123,10 @@ std::string failuresSection(const std::vector<Row>& rows) {
 
 } // namespace
 
+std::string packingName(double packing) {
+    return packing >= 0.81 ? "dense" : "loose";
+}
+
 std::string firstErrorLine(const std::filesystem::path& logPath) {
     std::ifstream log(logPath);
     std::string line, first;
@@ -135,7 +138,8 @@ std::string firstErrorLine(const std::filesystem::path& logPath) {
 }
 
 SweepReportResult writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
-                                   const std::filesystem::path& out) {
+                                   const std::filesystem::path& out,
+                                   const SweepFigureWriter& writeSweepFigures) {
     std::vector<Row> rows;
     for (const auto& entry : entries)
         rows.push_back(readRow(entry));
@@ -185,4 +189,4 @@ SweepReportResult writeSweepReport(const std::string& name, const std::vector<Sw
     return result;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

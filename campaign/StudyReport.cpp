@@ -1,5 +1,7 @@
 // Study table (CSV and Markdown) from the runs' summaries.
-#include "app/cli/StudyReport.h"
+#include "campaign/StudyReport.h"
+
+#include "campaign/StudyMap.h"
 
 #include "solver/io/CaseWriter.h"
 #include "solver/scene/SceneMetrics.h"
@@ -11,7 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
@@ -322,4 +324,25 @@ std::vector<std::string> writeStudyTables(const StudySpec& study, const std::vec
     return written;
 }
 
-} // namespace lbdem::cli
+StudyReportResult writeStudyReport(const StudySpec& study, const std::filesystem::path& out,
+                                   const StudyPlotter& plot) {
+    const auto rows = tabulateStudy(study);
+    // Over several keys with neither an analytic value nor a resolution key, the "error" is a
+    // difference from the last value of a key: tabulated, but not worth a figure.
+    const bool noErrorScale = study.keys.size() > 1 && study.resolutionKey < 0 &&
+                              study.reference == StudyReference::Finest;
+    const bool plotted = plot && !noErrorScale && plot(study, rows, (out / "study.png").string());
+    StudyReportResult result;
+    if (noErrorScale && plot)
+        result.plotNote =
+            "The errors are differences from the last value of " + study.keys.back() +
+            ", neither an analytic value nor a finer resolution, so study.png is not drawn.";
+    else if (plot && !plotted)
+        result.plotNote =
+            "No setting has a positive error and wall time, so study.png is not drawn.";
+    result.files = writeStudyTables(study, rows, out, plotted, result.plotNote);
+    if (study.keys.size() > 1) result.files.push_back(writeStudyMap(study, rows, out));
+    return result;
+}
+
+} // namespace lbdem::campaign

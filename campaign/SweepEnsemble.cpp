@@ -1,5 +1,5 @@
 // Ensemble runs of a sweep and the spread of each case's figures over its packing seeds.
-#include "app/cli/SweepEnsemble.h"
+#include "campaign/SweepEnsemble.h"
 
 #include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
@@ -16,7 +16,7 @@
 #include <map>
 #include <stdexcept>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 namespace {
 
@@ -249,4 +249,4 @@ std::string ensembleMarkdown(const std::vector<EnsembleCase>& cases) {
     return md;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -1,13 +1,14 @@
 // The combined table and figures of a sweep.
 #pragma once
 
+#include "campaign/SweepFigureCase.h"
 #include "solver/scene/CaseSpec.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// One run of a sweep (a case, or a case with one packing seed of an ensemble) and its folder.
 struct SweepEntry {
@@ -30,11 +31,12 @@ struct SweepReportResult {
     std::string note;               ///< why figures are missing (no VTK, nothing finished ...)
 };
 
-/// Write OUT/sweep.csv, OUT/sweep.md and (when built with VTK) the paper's figures as PNG, from
+/// Write OUT/sweep.csv, OUT/sweep.md and the paper's figures (drawn by writeSweepFigures), from
 /// each case's summary.json and timeseries.csv; sweep.md links the figures and names the cases
 /// left out of them. An ensemble (runs with a seed) gets the per-case spread over its seeds in
 /// sweep.csv and sweep.md, the findings in findings.csv and sweep.md, one row per run in runs.csv.
 SweepReportResult writeSweepReport(const std::string& name, const std::vector<SweepEntry>& entries,
-                                   const std::filesystem::path& out);
+                                   const std::filesystem::path& out,
+                                   const SweepFigureWriter& writeSweepFigures);
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -1,7 +1,8 @@
 // Sweep figures from each case's timeseries.csv, drawn with the vis line charts.
-#include "app/cli/SweepFigures.h"
+#include "campaign/figures/SweepFigures.h"
 
-#include "app/cli/SweepEnsemble.h"
+#include "campaign/EnsembleBand.h"
+#include "campaign/SweepEnsemble.h"
 #include "solver/io/TimeSeriesWriter.h"
 
 #ifdef LBDEM_HAS_VIS
@@ -16,11 +17,7 @@
 #include <set>
 #include <tuple>
 
-namespace lbdem::cli {
-
-std::string packingName(double packing) {
-    return packing >= 0.81 ? "dense" : "loose";
-}
+namespace lbdem::campaign {
 
 #ifdef LBDEM_HAS_VIS
 namespace {
@@ -54,20 +51,9 @@ std::string slopeText(double slopeDeg) {
 vis::ChartSeries curve(const CaseCurves& c, const std::string& column, std::string name) {
     vis::ChartSeries series;
     series.name = std::move(name);
-    const auto t = c.tables.front().column("t_over_tc");
-    std::vector<std::vector<double>> times, values;
-    for (const auto& table : c.tables)
-        times.push_back(table.column("t_over_tc")), values.push_back(table.column(column));
-    for (const double at : t) {
-        std::vector<double> ys;
-        for (std::size_t r = 0; r < c.tables.size(); ++r)
-            ys.push_back(interpolate(times[r], values[r], at));
-        const Spread spread = spreadOf(ys);
-        if (!std::isfinite(at) || spread.count < static_cast<int>(ys.size()) || ys.empty())
-            continue;
-        series.x.push_back(at), series.y.push_back(spread.mean);
-        if (ys.size() > 1) series.low.push_back(spread.min), series.high.push_back(spread.max);
-    }
+    const EnsembleBand band = ensembleBand(c.tables, column);
+    series.x = band.t_over_tc, series.y = band.mean;
+    if (c.tables.size() > 1) series.low = band.min, series.high = band.max;
     return series;
 }
 
@@ -281,4 +267,4 @@ SweepFiguresResult writeSweepFigures(const std::string& sweepName,
     return result;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

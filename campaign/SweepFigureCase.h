@@ -1,12 +1,13 @@
-// The paper's figures of a sweep (PNG): runout, kinetic energy and Froude number against
-// t/tau_c, final runout against slope.
+// What the figures of a sweep are drawn from, and the writer that draws them (supplied by a layer
+// that may use VTK: campaign/figures).
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// What the figures need of one case of a sweep.
 struct SweepFigureCase {
@@ -30,15 +31,9 @@ struct SweepFiguresResult {
 /// paper's 0.79 and 0.83), else "loose".
 std::string packingName(double packing);
 
-/// Draws into `out`, from the finished cases: runout_<packing>.png and energy_<packing>.png
-/// (runout_normalised and ke_over_ep0 against t/tau_c, one figure per packing, colour by slope,
-/// solid dry and dashed submerged), runout_vs_slope.png (final runout, packing x medium) and
-/// froude.png (submerged cases, with the Fr = 0.4 hydroplaning line). Runs that share a case
-/// name (an ensemble over packing seeds) are drawn as their mean with a shaded min-max band, named
-/// in the legend. Unfinished or unreadable runs are skipped and listed by folder; a build without
-/// VTK draws nothing and says so.
-SweepFiguresResult writeSweepFigures(const std::string& sweepName,
-                                     const std::vector<SweepFigureCase>& cases,
-                                     const std::filesystem::path& out);
+/// Draws the figures of a sweep named sweepName from its cases into out.
+using SweepFigureWriter = std::function<SweepFiguresResult(
+    const std::string& sweepName, const std::vector<SweepFigureCase>& cases,
+    const std::filesystem::path& out)>;
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-namespace lbdem::cli {
+namespace lbdem::campaign {
 
 /// A duration in seconds as "1h05m", "3m20s" or "42s".
 inline std::string formatDuration(double s) {
@@ -20,4 +20,4 @@ inline std::string formatDuration(double s) {
     return buffer;
 }
 
-} // namespace lbdem::cli
+} // namespace lbdem::campaign
