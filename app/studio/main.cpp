@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFileInfo>
 
 #include <iostream>
 
@@ -23,7 +24,12 @@ int main(int argc, char** argv) {
     const QCommandLineOption shot("screenshot", "Save the window as PNG once the run is shown.",
                                   "FILE");
     const QCommandLineOption quit("quit", "Quit after the screenshot.");
-    parser.addOptions({set, steps, shot, quit});
+    const QCommandLineOption ensemble(
+        "ensemble",
+        "Shade behind the live curves the band of the case's finished runs in a sweep "
+        "folder (lbdem sweep --seeds).",
+        "DIR");
+    parser.addOptions({set, steps, shot, quit, ensemble});
 
     // Bad input is reported before any window or display is touched: one sentence, exit 2.
     QStringList arguments;
@@ -49,6 +55,11 @@ int main(int argc, char** argv) {
                   << parser.value(steps).toStdString() << "'.\n";
         return 2;
     }
+    if (parser.isSet(ensemble) && !QFileInfo(parser.value(ensemble)).isDir()) {
+        std::cerr << "lbdem-studio: --ensemble expects a sweep folder, and '"
+                  << parser.value(ensemble).toStdString() << "' is not a folder.\n";
+        return 2;
+    }
     script.screenshot = parser.value(shot);
     script.quit = parser.isSet(quit);
     const bool scripted = parser.isSet(steps) || parser.isSet(shot) || script.quit;
@@ -72,6 +83,7 @@ int main(int argc, char** argv) {
     parser.process(app); // --help and --version print and exit here
 
     MainWindow window;
+    if (parser.isSet(ensemble)) window.setEnsembleFolder(parser.value(ensemble));
     if (!path.isEmpty() || scripted) window.setCase(spec, path.isEmpty() ? "defaults" : path);
     if (scripted) window.resize(1400, 900); // a fixed size keeps documentation images alike
     window.show();

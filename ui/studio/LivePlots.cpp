@@ -1,11 +1,13 @@
 // Feeding the live plots from snapshots and writing their rows as CSV.
 #include "ui/studio/LivePlots.h"
 
+#include "campaign/EnsembleBand.h"
 #include "solver/io/CaseWriter.h"
 #include "ui/studio/PlotWidget.h"
 
 #include <QHBoxLayout>
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -47,6 +49,38 @@ void LivePlots::clear() {
         plot->clear();
         plot->setEmptyNote({});
     }
+}
+
+int LivePlots::showEnsemble(const std::filesystem::path& sweepOut, const std::string& caseName) {
+    int runs = 0;
+    for (const char* metric : {kRunout, kKineticEnergy, kFroude}) {
+        const auto band = campaign::loadEnsembleBand(sweepOut, caseName, metric);
+        PlotWidget* target = plotOf(metric);
+        if (band.runs == 0) {
+            target->clearBand();
+            continue;
+        }
+        auto vector = [](const std::vector<double>& values) {
+            return QVector<double>(values.begin(), values.end());
+        };
+        target->setBand(vector(band.t_over_tc), vector(band.min), vector(band.mean),
+                        vector(band.max),
+                        tr("band: min-max of %1 seeds, dashed: mean").arg(band.runs));
+        runs = std::max(runs, band.runs);
+    }
+    return runs;
+}
+
+void LivePlots::clearEnsemble() {
+    for (PlotWidget* plot : {m_runout, m_energy, m_froude})
+        plot->clearBand();
+}
+
+PlotWidget* LivePlots::plotOf(const std::string& metric) const {
+    if (metric == kRunout) return m_runout;
+    if (metric == kKineticEnergy) return m_energy;
+    if (metric == kFroude) return m_froude;
+    return nullptr;
 }
 
 void LivePlots::writeCsv(const QString& path) const {

@@ -6,6 +6,7 @@
 #include <QString>
 #include <QWidget>
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -29,6 +30,14 @@ public:
     void addSnapshot(const solver::Snapshot& snapshot);
     /// Forget every point (a new run starts).
     void clear();
+    /// Shade behind each live curve the band (min-max, dashed mean) of the finished runs of
+    /// caseName in the sweep folder sweepOut (its NAME_sK folders); returns how many runs the
+    /// bands are taken over, 0 (and no band) when there is no finished ensemble there.
+    int showEnsemble(const std::filesystem::path& sweepOut, const std::string& caseName);
+    /// Remove the ensemble bands.
+    void clearEnsemble();
+    /// The plot of a metric (kRunout, kKineticEnergy or kFroude); null for any other name.
+    const PlotWidget* plot(const std::string& metric) const { return plotOf(metric); }
     /// Rows recorded so far.
     std::size_t rowCount() const { return m_rows.size(); }
     /// Write step, time_s, t_over_tc and every metric seen as CSV; throws std::runtime_error
@@ -36,6 +45,8 @@ public:
     void writeCsv(const QString& path) const;
 
 private:
+    PlotWidget* plotOf(const std::string& metric) const;
+
     struct Row {
         long long step;
         double time_s;

@@ -99,6 +99,9 @@ void MainWindow::createActions() {
         make(tr("Record &VTU series..."), QKeySequence(),
              tr("Write every frame shown as VTU/VTI files with .pvd series for ParaView"));
     m_recordVtk->setCheckable(true);
+    m_ensemble = make(tr("Show ensemble &band..."), QKeySequence(),
+                      tr("Shade behind the live curves the min-max of this case's finished runs "
+                         "in a sweep folder (lbdem sweep --seeds)"));
     connect(m_open, &QAction::triggered, this, &MainWindow::openDialog);
     connect(m_save, &QAction::triggered, this, &MainWindow::saveDialog);
     connect(m_quit, &QAction::triggered, this, &QWidget::close);
@@ -109,6 +112,7 @@ void MainWindow::createActions() {
     connect(m_exportPng, &QAction::triggered, this, &MainWindow::exportPng);
     connect(m_exportCsv, &QAction::triggered, this, &MainWindow::exportCsv);
     connect(m_recordVtk, &QAction::toggled, this, &MainWindow::toggleVtkRecording);
+    connect(m_ensemble, &QAction::triggered, this, &MainWindow::ensembleDialog);
 
     auto* toolbar = addToolBar(tr("Run"));
     toolbar->setObjectName("runToolbar");
@@ -142,7 +146,7 @@ void MainWindow::createMenus() {
     m_presetMenu->setEnabled(!m_presetMenu->isEmpty());
     file->addAction(m_save);
     file->addSeparator();
-    for (QAction* action : {m_exportPng, m_exportCsv, m_recordVtk})
+    for (QAction* action : {m_exportPng, m_exportCsv, m_recordVtk, m_ensemble})
         file->addAction(action);
     file->addSeparator();
     file->addAction(m_quit);
@@ -204,6 +208,8 @@ void MainWindow::setCase(const solver::CaseSpec& spec, const QString& source) {
     m_casePath = source;
     setWindowTitle(tr("%1 - lbdem studio").arg(QFileInfo(source).fileName()));
     m_editor->setCase(spec);
+    m_caseName = spec.name;
+    showEnsembleBand();
     m_controller->load(spec);
     m_caseChangedSinceLoad = false;
     updateActions();
@@ -297,6 +303,36 @@ void MainWindow::toggleVtkRecording(bool on) {
     if (!m_vtkWriter) m_recordVtk->setChecked(false);
 }
 
+int MainWindow::setEnsembleFolder(const QString& folder) {
+    m_ensembleFolder = folder;
+    return showEnsembleBand();
+}
+
+void MainWindow::ensembleDialog() {
+    const QString start = m_ensembleFolder.isEmpty() ? QSettings().value("files/lastDir").toString()
+                                                     : m_ensembleFolder;
+    const QString folder = QFileDialog::getExistingDirectory(
+        this, tr("Sweep folder with this case's runs (NAME_s1, NAME_s2, ...)"), start);
+    if (folder.isEmpty()) return;
+    QSettings().setValue("ensemble/folder", folder);
+    setEnsembleFolder(folder);
+}
+
+int MainWindow::showEnsembleBand() {
+    if (m_ensembleFolder.isEmpty() || m_caseName.empty()) {
+        m_plots->clearEnsemble();
+        return 0;
+    }
+    const int runs = m_plots->showEnsemble(m_ensembleFolder.toStdString(), m_caseName);
+    const QString name = QString::fromStdString(m_caseName);
+    m_status->showMessage(runs > 0
+                              ? tr("ensemble band: %1 finished runs of %2 in %3")
+                                    .arg(runs)
+                                    .arg(name, m_ensembleFolder)
+                              : tr("no finished ensemble of %1 in %2").arg(name, m_ensembleFolder));
+    return runs;
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
     m_controller->shutdown();
     saveSettings();
@@ -308,6 +344,7 @@ void MainWindow::restoreSettings() {
     if (!restoreGeometry(settings.value("window/geometry").toByteArray())) resize(1400, 900);
     restoreState(settings.value("window/state").toByteArray());
     m_view->setLayers(loadViewSettings(settings, m_view->layers()));
+    m_ensembleFolder = settings.value("ensemble/folder").toString();
 }
 
 void MainWindow::saveSettings() const {

@@ -40,6 +40,11 @@ public:
     /// Show spec in the editor and build it on the solver thread (source names it in the title).
     void setCase(const solver::CaseSpec& spec, const QString& source);
 
+    /// Shade behind the live curves the band of the case's finished ensemble in the sweep folder
+    /// (its NAME_sK runs), now and for every case loaded later; an empty folder removes it.
+    /// Returns how many runs the band holds for the current case (0: none there).
+    int setEnsembleFolder(const QString& folder);
+
     SimulationController& controller() { return *m_controller; }
     CaseEditor& caseEditor() { return *m_editor; }
     LiveView& liveView() { return *m_view; }
@@ -74,6 +79,8 @@ private:
     void saveDialog();
     void exportPng();
     void exportCsv();
+    void ensembleDialog();
+    int showEnsembleBand();
     void toggleVtkRecording(bool on);
     void restoreSettings();
     void saveSettings() const;
@@ -87,11 +94,14 @@ private:
     QAction *m_open = nullptr, *m_save = nullptr, *m_quit = nullptr;
     QAction *m_run = nullptr, *m_pause = nullptr, *m_step = nullptr, *m_reset = nullptr;
     QAction *m_exportPng = nullptr, *m_exportCsv = nullptr, *m_recordVtk = nullptr;
+    QAction* m_ensemble = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_presetMenu = nullptr;
     solver::SnapshotPtr m_shown;
     std::unique_ptr<vis::VtkRunWriter> m_vtkWriter;
     QString m_casePath;
+    std::string m_caseName;
+    QString m_ensembleFolder;
     bool m_caseChangedSinceLoad = false;
 };
 

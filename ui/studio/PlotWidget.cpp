@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace lbdem::studio {
 
@@ -19,6 +20,20 @@ double niceStep(double span, int target) {
         if (raw <= factor * magnitude) return factor * magnitude;
     return 10.0 * magnitude;
 }
+
+/// The data's extent: x0..x1 and y0..y1 over the points, the band and the reference line.
+struct Extent {
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    bool empty = true;
+    void add(double x, double y) {
+        if (!std::isfinite(x) || !std::isfinite(y)) return;
+        if (empty) {
+            x0 = x1 = x, y0 = y1 = y, empty = false;
+            return;
+        }
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+};
 
 } // namespace
 
@@ -48,6 +63,26 @@ void PlotWidget::setReferenceLine(double y, const QString& label) {
     update();
 }
 
+void PlotWidget::setBand(const QVector<double>& x, const QVector<double>& lower,
+                         const QVector<double>& mean, const QVector<double>& upper,
+                         const QString& label) {
+    const bool consistent =
+        lower.size() == x.size() && mean.size() == x.size() && upper.size() == x.size();
+    if (!consistent || x.isEmpty()) {
+        clearBand();
+        return;
+    }
+    m_bandX = x, m_bandLower = lower, m_bandMean = mean, m_bandUpper = upper;
+    m_bandLabel = label;
+    update();
+}
+
+void PlotWidget::clearBand() {
+    m_bandX.clear(), m_bandLower.clear(), m_bandMean.clear(), m_bandUpper.clear();
+    m_bandLabel.clear();
+    update();
+}
+
 void PlotWidget::setEmptyNote(const QString& note) {
     m_emptyNote = note;
     update();
@@ -65,17 +100,17 @@ void PlotWidget::paintEvent(QPaintEvent*) {
                      Qt::AlignHCenter, m_xLabel);
     painter.setPen(QColor(120, 120, 120));
     painter.drawRect(frame);
-    if (m_points.isEmpty() || frame.width() < 20 || frame.height() < 20) {
+    Extent extent;
+    for (const QPointF& p : m_points)
+        extent.add(p.x(), p.y());
+    for (int k = 0; k < m_bandX.size(); ++k)
+        extent.add(m_bandX[k], m_bandLower[k]), extent.add(m_bandX[k], m_bandUpper[k]);
+    if (extent.empty || frame.width() < 20 || frame.height() < 20) {
         painter.drawText(frame, Qt::AlignCenter | Qt::TextWordWrap,
                          m_emptyNote.isEmpty() ? tr("no data yet") : m_emptyNote);
         return;
     }
-    double x0 = m_points.front().x(), x1 = m_points.back().x();
-    double y0 = m_points.front().y(), y1 = y0;
-    for (const QPointF& p : m_points) {
-        x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
-        y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
-    }
+    double x0 = extent.x0, x1 = extent.x1, y0 = extent.y0, y1 = extent.y1;
     if (m_reference) y0 = std::min(y0, *m_reference), y1 = std::max(y1, *m_reference);
     if (x1 - x0 < 1e-12) x1 = x0 + 1;
     if (y1 - y0 < 1e-12) y0 -= 0.5, y1 += 0.5;
@@ -94,6 +129,8 @@ void PlotWidget::paintEvent(QPaintEvent*) {
         painter.drawText(QRectF(0, at.y() - line / 2.0, frame.left() - 3, line),
                          Qt::AlignRight | Qt::AlignVCenter, QString::number(y, 'g', 3));
     }
+    if (!m_bandX.isEmpty()) drawBand(painter, map, frame, line);
+    painter.setPen(Qt::black);
     painter.drawText(QRectF(frame.left() + 3, frame.top() + 2, frame.width(), line), Qt::AlignLeft,
                      m_yLabel);
     painter.drawText(QRectF(frame.left(), frame.bottom() + 1, frame.width(), line), Qt::AlignRight,
@@ -106,11 +143,33 @@ void PlotWidget::paintEvent(QPaintEvent*) {
         painter.drawText(QRectF(frame.left(), labelTop, frame.width() - 4, line), Qt::AlignRight,
                          m_referenceLabel);
     }
+    if (m_points.isEmpty()) return;
     QPainterPath path(map(m_points.front().x(), m_points.front().y()));
     for (const QPointF& p : m_points)
         path.lineTo(map(p.x(), p.y()));
     painter.setPen(QPen(QColor(30, 90, 180), 1.6));
     painter.drawPath(path);
+}
+
+void PlotWidget::drawBand(QPainter& painter, const std::function<QPointF(double, double)>& map,
+                          const QRectF& frame, int line) const {
+    QPolygonF area;
+    for (int k = 0; k < m_bandX.size(); ++k)
+        area << map(m_bandX[k], m_bandUpper[k]);
+    for (int k = m_bandX.size() - 1; k >= 0; --k)
+        area << map(m_bandX[k], m_bandLower[k]);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(bandColor());
+    painter.drawPolygon(area);
+    painter.setBrush(Qt::NoBrush);
+    QPainterPath mean(map(m_bandX.front(), m_bandMean.front()));
+    for (int k = 1; k < m_bandX.size(); ++k)
+        mean.lineTo(map(m_bandX[k], m_bandMean[k]));
+    painter.setPen(QPen(QColor(90, 120, 170), 1, Qt::DashLine));
+    painter.drawPath(mean);
+    painter.setPen(QColor(70, 90, 130));
+    painter.drawText(QRectF(frame.left() + 3, frame.top() + line + 2, frame.width() - 6, line),
+                     Qt::AlignLeft, m_bandLabel);
 }
 
 } // namespace lbdem::studio
