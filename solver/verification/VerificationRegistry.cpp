@@ -1,6 +1,7 @@
 // The registry of verification cases: each module contributes its list here.
 #include "solver/verification/Verification.h"
 
+#include "solver/verification/ColumnPermeability.h"
 #include "solver/verification/CouplingVerification.h"
 #include "solver/verification/DemVerification.h"
 #include "solver/verification/FluidVerification.h"
@@ -17,7 +18,8 @@ namespace {
 /// Functions returning each module's cases; a module adds its provider here.
 using Provider = std::vector<VerificationCase> (*)();
 const Provider kProviders[] = {fluidVerificationCases, demVerificationCases,
-                               couplingVerificationCases, couplingRestCases};
+                               couplingVerificationCases, couplingRestCases,
+                               columnPermeabilityCases};
 
 } // namespace
 
