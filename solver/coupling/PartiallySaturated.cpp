@@ -162,36 +162,14 @@ void Coupling::collidePsm() {
         slots[k + 2] = t;
     };
     const long long groups = static_cast<long long>(m_linkStart.size()) - 1;
-    auto run = [&](const auto& collide) {
+    // The bulk kernel's operator and parameters (Lattice::step), so a cell with B = 0 is
+    // unchanged.
+    withCollision(p, s.fx, s.fy, [&](const auto& collide) {
 #pragma omp parallel for schedule(static) if (groups > kParallelMin)
         for (long long g = 0; g < groups; ++g)
             psmCell(ctx, collide, incoming + g * kQ, base + m_linkStart[g],
                     base + m_linkStart[g + 1], surface, addLoad);
-    };
-    // The same operator, parameters and dispatch as Lattice::step, so a cell with B = 0 is
-    // unchanged.
-    const bool force = s.fx != 0 || s.fy != 0;
-    const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
-    switch (p.model) {
-    case CollisionModel::Bgk:
-        if (force)
-            run(BgkCollision<true>{sNu, s.fx, s.fy});
-        else
-            run(BgkCollision<false>{sNu, s.fx, s.fy});
-        break;
-    case CollisionModel::Mrt:
-        if (force)
-            run(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        else
-            run(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        break;
-    case CollisionModel::MrtLes:
-        if (force)
-            run(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        else
-            run(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        break;
-    }
+    });
     for (std::size_t k = 0; k < m_psm.size(); ++k) {
         const std::int32_t g = m_psm[k].grain;
         m_loadX[g] += slots[3 * k];

@@ -187,4 +187,35 @@ template <bool kLes, bool kForce> struct MrtCollision {
     }
 };
 
+/// Call visit(collide) once with the operator of `params` and the body force (fx, fy) (Guo; the
+/// force-free variants when both are 0): the one place the model and the force select a kernel,
+/// shared by the bulk step and the partially saturated cells so that both collide alike. Each
+/// branch instantiates visit for one concrete operator, so the node loop it runs is fully inlined.
+template <class Visit>
+void withCollision(const CollisionParams& params, Real fx, Real fy, const Visit& visit) {
+    const CollisionParams& p = params;
+    const bool force = fx != 0 || fy != 0;
+    const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
+    switch (p.model) {
+    case CollisionModel::Bgk:
+        if (force)
+            visit(BgkCollision<true>{sNu, fx, fy});
+        else
+            visit(BgkCollision<false>{sNu, fx, fy});
+        break;
+    case CollisionModel::Mrt:
+        if (force)
+            visit(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        else
+            visit(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        break;
+    case CollisionModel::MrtLes:
+        if (force)
+            visit(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        else
+            visit(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        break;
+    }
+}
+
 } // namespace lbdem::solver::lattice

@@ -244,31 +244,8 @@ template <class C> void Lattice::runStep(const C& collide) {
 }
 
 void Lattice::step() {
-    const CollisionParams& p = m_setup.collision;
-    const Real fx = m_setup.fx, fy = m_setup.fy;
-    const bool force = fx != 0 || fy != 0;
-    const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
-    // One dispatch per step: each branch runs a fully inlined kernel for one model.
-    switch (p.model) {
-    case CollisionModel::Bgk:
-        if (force)
-            runStep(BgkCollision<true>{sNu, fx, fy});
-        else
-            runStep(BgkCollision<false>{sNu, fx, fy});
-        break;
-    case CollisionModel::Mrt:
-        if (force)
-            runStep(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else
-            runStep(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        break;
-    case CollisionModel::MrtLes:
-        if (force)
-            runStep(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else
-            runStep(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        break;
-    }
+    withCollision(m_setup.collision, m_setup.fx, m_setup.fy,
+                  [this](const auto& collide) { runStep(collide); });
 }
 
 } // namespace lbdem::solver::lattice
