@@ -187,6 +187,19 @@ template <bool kLes, bool kForce> struct MrtCollision {
     }
 };
 
+/// MRT without and with the LES shear rate, as operators of the force flag alone.
+template <bool kForce> using MrtPlain = MrtCollision<false, kForce>;
+template <bool kForce> using MrtWithLes = MrtCollision<true, kForce>;
+
+/// visit(Op<true>{parameters...}) when `force`, else visit(Op<false>{parameters...}).
+template <template <bool> class Op, class Visit, class... Parameters>
+void withForceVariant(bool force, const Visit& visit, Parameters... parameters) {
+    if (force)
+        visit(Op<true>{parameters...});
+    else
+        visit(Op<false>{parameters...});
+}
+
 /// Call visit(collide) once with the operator of `params` and the body force (fx, fy) (Guo; the
 /// force-free variants when both are 0): the one place the model and the force select a kernel,
 /// shared by the bulk step and the partially saturated cells so that both collide alike. Each
@@ -198,22 +211,14 @@ void withCollision(const CollisionParams& params, Real fx, Real fy, const Visit&
     const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
     switch (p.model) {
     case CollisionModel::Bgk:
-        if (force)
-            visit(BgkCollision<true>{sNu, fx, fy});
-        else
-            visit(BgkCollision<false>{sNu, fx, fy});
+        withForceVariant<BgkCollision>(force, visit, sNu, fx, fy);
         break;
     case CollisionModel::Mrt:
-        if (force)
-            visit(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else
-            visit(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        withForceVariant<MrtPlain>(force, visit, sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy);
         break;
     case CollisionModel::MrtLes:
-        if (force)
-            visit(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else
-            visit(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
+        withForceVariant<MrtWithLes>(force, visit, sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx,
+                                     fy);
         break;
     }
 }
