@@ -1,4 +1,5 @@
 // Coupling: disc-cell overlap areas, Galilean invariance, momentum conservation, SI load hand-over.
+#include "solver/core/InputError.h"
 #include "solver/coupling/BounceBackCoupling.h"
 #include "solver/coupling/DiscGeometry.h"
 #include "solver/lattice/D2Q9.h"
@@ -64,6 +65,7 @@ private slots:
     void momentumConservation();
     void loadsReachDemInSi();
     void restartIsBitForBit();
+    void psmStateIsEmpty();
     void cornerGrainStaysBounded();
     void threadCountDoesNotMatter();
     void farGrainsScanNoFurtherThanTheLattice();
@@ -291,6 +293,27 @@ void CouplingTest::restartIsBitForBit() {
     QVERIFY(a.exportPopulations() == b.exportPopulations());
     QVERIFY(linkA.latticeLoad(0).fx == linkB.latticeLoad(0).fx);
     QVERIFY(linkA.latticeLoad(0).torque == linkB.latticeLoad(0).torque);
+}
+
+void CouplingTest::psmStateIsEmpty() {
+    // Partially saturated cells keep nothing between steps: their state is the empty one, it
+    // restores, and a state with covered nodes (a bounce-back checkpoint) is refused.
+    lattice::Lattice lat(periodicBox(40));
+    dem::DemSystem dem;
+    dem.addDisc(15.3, 20.6, 6.2);
+    const auto link = coupling::makeCoupling(lat, dem, latticeUnits(CouplingMethod::Psm));
+    link->mapGrains();
+    lat.step();
+    link->collectForces();
+    QVERIFY(link->boundaryCount() > 0);
+    const coupling::CouplingState state = link->state();
+    QVERIFY(state.cells.empty() && state.grains.empty() && !state.initialised &&
+            state.previous_loads.empty());
+    link->restore(state);
+    coupling::CouplingState covered;
+    covered.cells = {lat.index(15, 20)};
+    covered.grains = {0};
+    QVERIFY_EXCEPTION_THROWN(link->restore(covered), InputError);
 }
 
 void CouplingTest::cornerGrainStaysBounded() {
