@@ -155,9 +155,9 @@ int runFluidBench(const BenchOptions& options) {
 int runDemBench(const BenchOptions& options) {
     const solver::CaseSpec defaults;
     solver::dem::DemBenchConfig config;
-    config.material = solver::grainMaterial(defaults.grains);
-    config.d_min = defaults.grains.d_min_m;
-    config.size_ratio = defaults.grains.size_ratio;
+    config.pile.material = solver::grainMaterial(defaults.grains);
+    config.pile.d_min = defaults.grains.d_min_m;
+    config.pile.size_ratio = defaults.grains.size_ratio;
     config.dt_safety = defaults.grains.dt_safety;
 #ifdef _OPENMP
     const int most = options.threads > 0 ? options.threads : omp_get_max_threads();
@@ -167,7 +167,7 @@ int runDemBench(const BenchOptions& options) {
     config.threads = {1};
     if (most > 1) config.threads.push_back(most);
     if (!options.json)
-        std::printf("building (or reading) a settled %d-disc pile...\n", config.particles);
+        std::printf("building (or reading) a settled %d-disc pile...\n", config.pile.count);
     const solver::dem::DemBenchResult result = solver::dem::runDemBench(config);
     if (options.json) {
         nlohmann::json runs = nlohmann::json::array();

@@ -1,13 +1,34 @@
-// Coupling set-up, unit conversion and the hand-over of hydrodynamic loads to the DEM.
+// Coupling set-up, unit conversion, the method factory and the hand-over of hydrodynamic loads to
+// the DEM.
 #include "solver/coupling/Coupling.h"
 
 #include "solver/core/InputError.h"
+#include "solver/coupling/BounceBackCoupling.h"
+#include "solver/coupling/PsmCoupling.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace lbdem::solver::coupling {
+
+namespace {
+
+/// Clip the node range [lo, hi] (whole numbers held as Real, possibly NaN or huge) to [min, max]
+/// and at most `period` nodes long (0: no limit); empty (i0 > i1) when nothing is left.
+void clipRange(Real lo, Real hi, Real min, Real max, Real period, int& i0, int& i1) {
+    i0 = 0;
+    i1 = -1;
+    if (!(lo <= hi)) return; // empty, or NaN
+    lo = std::max(lo, min);
+    hi = std::min(hi, max);
+    if (period > 0) hi = std::min(hi, lo + period - 1);
+    if (lo > hi) return;
+    i0 = static_cast<int>(lo);
+    i1 = static_cast<int>(hi);
+}
+
+} // namespace
 
 CouplingMethod couplingMethodFromName(const std::string& name) {
     if (name == "bounce_back") return CouplingMethod::BounceBack;
@@ -25,6 +46,13 @@ PsmWeight psmWeightFromName(const std::string& name) {
     throw std::invalid_argument("unknown psm weight '" + name + "'");
 }
 
+std::unique_ptr<Coupling> makeCoupling(lattice::Lattice& lattice, dem::DemSystem& dem,
+                                       const CouplingParams& params) {
+    if (params.method == CouplingMethod::Psm)
+        return std::make_unique<PsmCoupling>(lattice, dem, params);
+    return std::make_unique<BounceBackCoupling>(lattice, dem, params);
+}
+
 Coupling::Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const CouplingParams& params)
     : m_lattice(lattice), m_dem(dem), m_params(params) {
     if (!(params.h > 0) || !(params.dt > 0) || !(params.rho_f > 0))
@@ -36,19 +64,17 @@ Coupling::Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const Couplin
     m_periodicY = setup.bottom.type == lattice::SideType::Periodic;
     m_originX = lattice.nodeX(0);
     m_originY = lattice.nodeY(0);
-    const auto cells = static_cast<std::size_t>(lattice.cells());
-    m_owner.assign(cells, -1);
-    m_solid.assign(cells, 0.0);
+    m_solid.assign(static_cast<std::size_t>(lattice.cells()), 0.0);
     resizeGrains();
 }
 
-void Coupling::resizeGrains() {
+bool Coupling::resizeGrains() {
     const std::size_t n = m_dem.particles().size();
-    if (m_loadX.size() == n) return;
-    m_box.assign(n, Box{});
+    if (m_loadX.size() == n) return false;
     m_loadX.assign(n, 0.0);
     m_loadY.assign(n, 0.0);
     m_loadT.assign(n, 0.0);
+    return true;
 }
 
 void Coupling::mapGrains() {
@@ -56,10 +82,7 @@ void Coupling::mapGrains() {
     std::fill(m_loadX.begin(), m_loadX.end(), 0.0);
     std::fill(m_loadY.begin(), m_loadY.end(), 0.0);
     std::fill(m_loadT.begin(), m_loadT.end(), 0.0);
-    if (m_params.method == CouplingMethod::BounceBack)
-        mapBounceBack();
-    else
-        mapPsm();
+    placeGrains();
     m_lattice.setLastSweptRow(topGrainRow());
 }
 
@@ -78,28 +101,16 @@ int Coupling::topGrainRow() const {
     return static_cast<int>(top < 0 || !(top < last) ? last : top);
 }
 
-void Coupling::collectForces() {
-    if (m_params.method == CouplingMethod::Psm) collidePsm();
+void Coupling::handOverLoads(const std::vector<Real>* previous) {
     auto& g = m_dem.particles();
     const std::size_t n = std::min(g.size(), m_loadX.size());
     const Real fu = forceUnit(), tu = torqueUnit();
-    // Bounce-back: the DEM gets the mean of the last two steps' loads. A fluid node between a grain
-    // and a wall (or another grain), bounced back on both sides, keeps a period-two mode: its
-    // momentum across the gap flips sign every step and nothing damps it as tau -> 1/2 (the
-    // collision conserves momentum). The link force follows that momentum and the grain's velocity
-    // feeds it back through the moving-wall term: per link, with grain mass M in lattice units,
-    // the gap momentum j and grain velocity V obey j' = -j + (2/3) V, V' = V + (j - (2/3) V) / M,
-    // whose eigenvalue -1/(3M) - sqrt(1 + 1/(9M^2)) lies outside the unit circle. This grew into a
-    // Mach ~1 blow-up beside a grain resting in the floor-wall corner at tau = 0.506. The two-step
-    // mean cancels the period-two part of the force and leaves slowly varying loads unchanged.
-    const bool average = m_params.method == CouplingMethod::BounceBack &&
-                         m_previousLoad.size() == 3 * m_loadX.size();
     for (std::size_t i = 0; i < n; ++i) {
         Real lx = m_loadX[i], ly = m_loadY[i], lt = m_loadT[i];
-        if (average) {
-            lx = 0.5 * (lx + m_previousLoad[3 * i]);
-            ly = 0.5 * (ly + m_previousLoad[3 * i + 1]);
-            lt = 0.5 * (lt + m_previousLoad[3 * i + 2]);
+        if (previous) {
+            lx = 0.5 * (lx + (*previous)[3 * i]);
+            ly = 0.5 * (ly + (*previous)[3 * i + 1]);
+            lt = 0.5 * (lt + (*previous)[3 * i + 2]);
         }
         // The DEM's stored totals include the previous external load; shift them by the change
         // so the first half-kick of the next sub-step already sees the new hydrodynamic load.
@@ -111,13 +122,21 @@ void Coupling::collectForces() {
         g.ext_fy[i] = fy;
         g.ext_torque[i] = t;
     }
-    if (m_params.method != CouplingMethod::BounceBack) return;
-    m_previousLoad.resize(3 * m_loadX.size());
-    for (std::size_t i = 0; i < m_loadX.size(); ++i) {
-        m_previousLoad[3 * i] = m_loadX[i];
-        m_previousLoad[3 * i + 1] = m_loadY[i];
-        m_previousLoad[3 * i + 2] = m_loadT[i];
-    }
+}
+
+Coupling::Box Coupling::clippedBox(Real cx, Real cy, Real r, Real margin) const {
+    // Along a wall-bounded side the lattice itself; along a periodic one the unwrapped indices a
+    // period either side (grainGeometry brings centres there) and one period long at most.
+    const Real nx = m_lattice.nx(), ny = m_lattice.ny();
+    Box box;
+    clipRange(std::ceil(cx - r - m_originX - margin), std::floor(cx + r - m_originX + margin),
+              m_periodicX ? -nx : 0, m_periodicX ? 2 * nx - 1 : nx - 1, m_periodicX ? nx : 0,
+              box.i0, box.i1);
+    clipRange(std::ceil(cy - r - m_originY - margin), std::floor(cy + r - m_originY + margin),
+              m_periodicY ? -ny : 0, m_periodicY ? 2 * ny - 1 : ny - 1, m_periodicY ? ny : 0,
+              box.j0, box.j1);
+    if (box.i0 > box.i1 || box.j0 > box.j1) return Box{};
+    return box;
 }
 
 GrainLoad Coupling::latticeLoad(std::size_t i) const {
@@ -128,81 +147,6 @@ GrainLoad Coupling::latticeLoad(std::size_t i) const {
 GrainLoad Coupling::load(std::size_t i) const {
     const GrainLoad l = latticeLoad(i);
     return {l.fx * forceUnit(), l.fy * forceUnit(), l.torque * torqueUnit()};
-}
-
-std::size_t Coupling::boundaryCount() const {
-    return m_params.method == CouplingMethod::BounceBack ? m_linkCount : m_psm.size();
-}
-
-CouplingState Coupling::state() const {
-    // Covered nodes grain by grain, each grain's row by row: the order mapGrains finds them in.
-    CouplingState state;
-    state.initialised = m_initialised;
-    state.previous_loads = m_previousLoad;
-    for (std::size_t p = 0; p < m_box.size(); ++p) {
-        const Box& box = m_box[p];
-        for (int ju = box.j0; ju <= box.j1; ++ju)
-            for (int iu = box.i0; iu <= box.i1; ++iu) {
-                int i = iu, j = ju;
-                if (!wrapNode(i, j)) continue;
-                const long long c = m_lattice.index(i, j);
-                if (m_owner[c] != static_cast<std::int32_t>(p)) continue;
-                state.cells.push_back(c);
-                state.grains.push_back(static_cast<std::int32_t>(p));
-            }
-    }
-    return state;
-}
-
-void Coupling::restore(const CouplingState& state) {
-    if (state.cells.size() != state.grains.size())
-        throw InputError("coupling state: cell and grain lists differ in length");
-    const std::size_t n = m_dem.particles().size();
-    if (!state.previous_loads.empty() && state.previous_loads.size() != 3 * n)
-        throw InputError("coupling state: the previous loads do not match the grain count");
-    resizeGrains();
-    m_previousLoad = state.previous_loads;
-    if (m_params.method == CouplingMethod::BounceBack) {
-        std::fill(m_owner.begin(), m_owner.end(), -1);
-        std::fill(m_solid.begin(), m_solid.end(), 0.0);
-    }
-    m_box.assign(n, Box{});
-    m_initialised = state.initialised;
-    const int nx = m_lattice.nx();
-    for (std::size_t k = 0; k < state.cells.size(); ++k) {
-        const long long c = state.cells[k];
-        const std::int32_t p = state.grains[k];
-        if (c < 0 || c >= m_lattice.cells() || p < 0 || static_cast<std::size_t>(p) >= n)
-            throw InputError("coupling state does not match the lattice or the grains");
-        m_owner[c] = p;
-        m_solid[c] = 1;
-        // The box that holds the grain's nodes, in wrapped indices: the next mapGrains scans it
-        // for the nodes the grain leaves.
-        const int i = static_cast<int>(c % nx), j = static_cast<int>(c / nx);
-        Box& box = m_box[p];
-        if (box.i0 > box.i1) box = {i, i, j, j};
-        box = {std::min(box.i0, i), std::max(box.i1, i), std::min(box.j0, j), std::max(box.j1, j)};
-    }
-}
-
-void Coupling::renumberGrains(const std::vector<std::int32_t>& newToOld) {
-    std::vector<std::int32_t> oldToNew(newToOld.size(), -1);
-    for (std::size_t k = 0; k < newToOld.size(); ++k)
-        oldToNew[newToOld[k]] = static_cast<std::int32_t>(k);
-    for (std::int32_t& owner : m_owner)
-        if (owner >= 0) owner = oldToNew[owner];
-    if (m_box.size() == newToOld.size()) {
-        const std::vector<Box> old = m_box;
-        for (std::size_t k = 0; k < newToOld.size(); ++k)
-            m_box[k] = old[newToOld[k]];
-    }
-    if (m_previousLoad.size() == 3 * newToOld.size()) {
-        const std::vector<Real> old = m_previousLoad;
-        for (std::size_t k = 0; k < newToOld.size(); ++k)
-            for (int c = 0; c < 3; ++c)
-                m_previousLoad[3 * k + c] = old[3 * newToOld[k] + c];
-    }
-    resizeGrains();
 }
 
 } // namespace lbdem::solver::coupling

@@ -1,14 +1,14 @@
-// Resolved fluid-grain coupling: moving bounce-back or partially saturated cells, with unit
-// conversion.
+// Resolved fluid-grain coupling: the interface both methods (moving bounce-back, partially
+// saturated cells) implement, the geometry and load hand-over they share, and unit conversion.
 #pragma once
 
-#include "solver/core/HugePageAllocator.h"
 #include "solver/core/Real.h"
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -54,7 +54,7 @@ struct GrainLoad {
 /// Restart state: the nodes covered at the last mapGrains, in order, with their grains, whether
 /// covering momentum is being tracked yet, and the raw loads of the last step (fx, fy, torque per
 /// grain, lattice units; empty before the first) that the next step averages with (bounce-back;
-/// PSM keeps no state).
+/// PSM keeps no state and writes an empty one).
 struct CouplingState {
     std::vector<long long> cells;
     std::vector<std::int32_t> grains;
@@ -62,7 +62,8 @@ struct CouplingState {
     std::vector<Real> previous_loads;
 };
 
-/// Couples a Lattice and a DemSystem. Per fluid step, in this order:
+/// Couples a Lattice and a DemSystem; makeCoupling builds the method's implementation. Per fluid
+/// step, in this order:
 ///   coupling.mapGrains();      // grain positions at t -> solid nodes / links or solid fractions
 ///   lattice.step();
 ///   coupling.collectForces();  // PSM collision of covered cells; ext loads into the DEM
@@ -73,30 +74,27 @@ struct CouplingState {
 /// lattice pressure is the excess pore pressure. Both objects must outlive the coupling.
 class Coupling {
 public:
-    /// Couple the lattice and the grains; allocates the per-cell arrays once.
-    Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const CouplingParams& params);
+    virtual ~Coupling() = default;
+    Coupling(const Coupling&) = delete;
+    Coupling& operator=(const Coupling&) = delete;
 
-    /// Map the grains (current DEM positions) onto the lattice. Bounce-back: refill uncovered
-    /// nodes, make covered nodes solid, write the moving-wall links and sum the exchanged
-    /// momentum. PSM: solid fraction and weight of every cell a grain overlaps.
+    /// Map the grains (current DEM positions) onto the lattice: this step's loads start from
+    /// zero, the method places the grains (placeGrains) and the bulk kernel is told which row to
+    /// sweep last.
     void mapGrains();
-    /// Finish the fluid step: PSM collision of the partly solid cells and their loads; then write
-    /// the SI loads into the particles' ext_fx, ext_fy, ext_torque (and shift fx, fy, torque by
-    /// the change so the next DEM step starts from consistent totals). Bounce-back hands the DEM
-    /// the mean of this step's and the last step's load (see collectForces for why).
-    void collectForces();
+    /// Finish the fluid step: the method's own last work and its loads, written into the
+    /// particles' ext_fx, ext_fy, ext_torque (handOverLoads).
+    virtual void collectForces() = 0;
 
-    /// Hydrodynamic load on grain i of the last step [N/m, N m/m] (raw, before the two-step mean).
+    /// Hydrodynamic load on grain i of the last step [N/m, N m/m] (raw, before any two-step mean).
     GrainLoad load(std::size_t i) const;
     /// Hydrodynamic load on grain i of the last step, lattice units.
     GrainLoad latticeLoad(std::size_t i) const;
     /// Solid fraction per lattice cell (index lattice.index(i, j)): 0/1 for bounce-back, eps for
     /// PSM.
     const std::vector<Real>& solidFraction() const { return m_solid; }
-    /// Grain covering each cell at the last mapGrains (-1: none); bounce-back only.
-    const HugeVector<std::int32_t>& owners() const { return m_owner; }
     /// Number of bounce-back links or PSM cell entries of the last mapGrains.
-    std::size_t boundaryCount() const;
+    virtual std::size_t boundaryCount() const = 0;
     /// The parameters the coupling was built with.
     const CouplingParams& params() const { return m_params; }
     /// Lattice force unit rho_f h^3 / dt^2 [N/m per lattice unit].
@@ -107,52 +105,50 @@ public:
     Real torqueUnit() const { return forceUnit() * m_params.h; }
 
     /// Restart state (plain data for the checkpoint writer).
-    CouplingState state() const;
+    virtual CouplingState state() const = 0;
     /// Restore the state written by state() (same lattice and grain count).
-    void restore(const CouplingState& state);
+    virtual void restore(const CouplingState& state) = 0;
     /// Follow dem.sortSpatially(): newToOld[k] is the old index of the grain now at k.
-    void renumberGrains(const std::vector<std::int32_t>& newToOld);
+    virtual void renumberGrains(const std::vector<std::int32_t>& newToOld) = 0;
 
-private:
+protected:
+    /// Check the parameters, read the lattice's sides and origin, allocate the per-cell arrays.
+    Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const CouplingParams& params);
+
     /// Loops over fewer items than this run on one thread: a parallel region costs more than
     /// a few thousand nodes of work (and much more when cores are oversubscribed).
     static constexpr long long kParallelMin = 4096;
 
-    /// A node whose owner changes this step: a grain covers it, or its grain leaves it.
-    struct Change {
-        long long cell;
-        std::int32_t grain;
-        int iu, ju;
-        bool cover;
-    };
     /// Nodes a grain's scan visits, in unwrapped lattice indices (inclusive).
     struct Box {
         int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
     };
-    struct PsmEntry {
-        long long cell;
-        std::int32_t grain;
-        Real eps, rx, ry;
-    };
-    /// A covered node within 1.5 of its grain's surface: reset to the surface motion, source of
-    /// the moving-wall links. (i, j) wrapped into the lattice, (sx, sy) from the grain's centre.
-    struct SurfaceNode {
-        long long cell;
-        int i, j;
-        std::int32_t grain;
-        Real sx, sy;
-    };
-    /// What the links of one grain need: radius and surface motion, lattice units.
-    struct GrainMotion {
-        Real r, vx, vy, w;
-    };
+
+    /// The method's part of mapGrains: solid nodes and links, or solid fractions; adds to the
+    /// loads (zeroed before).
+    virtual void placeGrains() = 0;
+    /// Write the SI loads into the particles' ext_fx, ext_fy, ext_torque (and shift fx, fy,
+    /// torque by the change so the next DEM step starts from consistent totals). With `previous`
+    /// (fx, fy, torque per grain of the step before) the mean of both steps is handed over.
+    void handOverLoads(const std::vector<Real>* previous);
+    /// Add per-entry loads (fx, fy, torque at 3k, 3k + 1, 3k + 2) to the grains grainOf(k), in
+    /// entry order: a sum independent of the thread count that filled them.
+    template <class GrainOf>
+    void addEntryLoads(const std::vector<Real>& entryLoads, std::size_t entries,
+                       const GrainOf& grainOf) {
+        for (std::size_t k = 0; k < entries; ++k) {
+            const std::int32_t g = grainOf(k);
+            m_loadX[g] += entryLoads[3 * k];
+            m_loadY[g] += entryLoads[3 * k + 1];
+            m_loadT[g] += entryLoads[3 * k + 2];
+        }
+    }
+    /// Size the per-grain loads for the current grain count; true when it changed.
+    bool resizeGrains();
 
     long long wrapCell(int iu, int ju) const;
     /// Wrap (i, j) into the lattice across periodic sides; false when it lies outside.
     bool wrapNode(int& i, int& j) const;
-    /// Node access of the links of surface nodes near the lattice's edges (wrapping, flags and
-    /// owners through the lattice and this coupling); defined with the links.
-    struct EdgeAccess;
     /// Centre and hydrodynamic radius of grain p in lattice units; across a periodic side the
     /// centre is brought within one period of the lattice (a no-op for grains inside it).
     void grainGeometry(std::size_t p, Real& cx, Real& cy, Real& r) const;
@@ -160,55 +156,23 @@ private:
     /// Nodes within r + margin of the centre (cx, cy) along each axis, clipped to the lattice (to
     /// one period along periodic sides): no loop over a box depends on an unclipped grain position.
     Box clippedBox(Real cx, Real cy, Real r, Real margin) const;
-    Box grainBox(std::size_t p) const;
-    /// The row the bulk kernel should sweep last: just above the highest grain (cache reuse).
-    int topGrainRow() const;
-    void resizeGrains();
-    void mapBounceBack();
-    void findChanges();
-    void findGrainChanges(std::size_t p, std::vector<Change>& out) const;
-    /// Owner changes of the nodes iu in [i0, i1] of row (ju, wrapped row j) for grain p.
-    void scanRow(std::int32_t p, int ju, int j, Real dy, int i0, int i1, Real cx, Real r,
-                 std::vector<Change>& out) const;
-    void applyChanges();
-    void refillUncovered();
-    /// The surface nodes of every grain, sorted row by row.
-    void findSurfaceNodes();
-    void findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) const;
-    /// Reset every surface node and apply its links, visiting the nodes row by row (memory
-    /// order); loads are summed per grain afterwards in grain order. Returns the link count.
-    std::size_t linkSurfaceNodes();
-    template <class S> std::size_t linkSurfaceNodesStored(S* stored);
-    void mapPsm();
-    void collidePsm();
 
     lattice::Lattice& m_lattice;
     dem::DemSystem& m_dem;
     CouplingParams m_params;
     bool m_periodicX = false, m_periodicY = false;
-    Real m_originX = 0, m_originY = 0; // lattice coordinate of node (0, 0)
-    bool m_initialised = false;
-
-    HugeVector<std::int32_t> m_owner; // per cell: grain covering it, -1 none, -2 just uncovered
-    std::vector<Real> m_solid;        // per cell: solid fraction (snapshot)
-    std::vector<Box> m_box;           // bounce-back, per grain: the box its nodes lie in
-    std::vector<std::vector<Change>> m_threadChanges;      // per thread, grains in order
-    std::vector<Change> m_uncovered;                       // nodes left by their grain this step
-    std::vector<std::vector<SurfaceNode>> m_threadSurface; // per thread, grains in order
-    std::vector<SurfaceNode>
-        m_surface; // surface nodes of all grains, row by row (grain order within)
-    std::vector<std::int32_t> m_rowStart; // counting sort of m_surface by row
-    std::vector<int> m_prefetchSpan;    // per row: first and last column its links' rows may touch
-    std::vector<Real> m_surfaceLoad;    // per surface node: (fx, fy, torque) of its links
-    std::vector<GrainMotion> m_motion;  // per grain, this step
-    std::size_t m_linkCount = 0;        // bounce-back links of the last mapGrains
-    std::vector<long long> m_linkStart; // PSM: first entry of each touched cell (prefix sums)
-    std::vector<Real> m_linkLoad;       // per PSM entry: momentum and torque exchanged
-    std::vector<PsmEntry> m_psm;
-    std::vector<long long> m_psmCells;           // cells touched by the last PSM mapping
+    Real m_originX = 0, m_originY = 0;           // lattice coordinate of node (0, 0)
+    std::vector<Real> m_solid;                   // per cell: solid fraction (snapshot)
     std::vector<Real> m_loadX, m_loadY, m_loadT; // lattice units, per grain
-    std::vector<Real> m_previousLoad; // bounce-back: (fx, fy, torque) per grain of the step before
+
+private:
+    /// The row the bulk kernel should sweep last: just above the highest grain (cache reuse).
+    int topGrainRow() const;
 };
+
+/// The coupling of params.method on the lattice and the grains (both must outlive it).
+std::unique_ptr<Coupling> makeCoupling(lattice::Lattice& lattice, dem::DemSystem& dem,
+                                       const CouplingParams& params);
 
 // Inline helpers of the per-node loops (they run once per covered node or link).
 

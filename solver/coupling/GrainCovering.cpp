@@ -5,9 +5,8 @@
 // nodes surely inside (one node clear of the circle) need only their owner read, and only the
 // few nodes near the circle get the exact test |x - c| < r_h. Nodes change owner in grain order
 // and, within a grain, row by row: the same order whatever the thread count.
-#include "solver/coupling/Coupling.h"
+#include "solver/coupling/BounceBackCoupling.h"
 
-#include "solver/core/OpenMp.h"
 #include "solver/lattice/D2Q9.h"
 
 #include <algorithm>
@@ -24,48 +23,16 @@ namespace {
 
 constexpr std::int32_t kNone = -1, kJustUncovered = -2;
 
-/// Fewer grains than this are scanned on one thread: a parallel region costs more than their work.
-constexpr std::size_t kParallelGrains = 32;
-
-/// Clip the node range [lo, hi] (whole numbers held as Real, possibly NaN or huge) to [min, max]
-/// and at most `period` nodes long (0: no limit); empty (i0 > i1) when nothing is left.
-void clipRange(Real lo, Real hi, Real min, Real max, Real period, int& i0, int& i1) {
-    i0 = 0;
-    i1 = -1;
-    if (!(lo <= hi)) return; // empty, or NaN
-    lo = std::max(lo, min);
-    hi = std::min(hi, max);
-    if (period > 0) hi = std::min(hi, lo + period - 1);
-    if (lo > hi) return;
-    i0 = static_cast<int>(lo);
-    i1 = static_cast<int>(hi);
-}
-
 } // namespace
 
-Coupling::Box Coupling::clippedBox(Real cx, Real cy, Real r, Real margin) const {
-    // Along a wall-bounded side the lattice itself; along a periodic one the unwrapped indices a
-    // period either side (grainGeometry brings centres there) and one period long at most.
-    const Real nx = m_lattice.nx(), ny = m_lattice.ny();
-    Box box;
-    clipRange(std::ceil(cx - r - m_originX - margin), std::floor(cx + r - m_originX + margin),
-              m_periodicX ? -nx : 0, m_periodicX ? 2 * nx - 1 : nx - 1, m_periodicX ? nx : 0,
-              box.i0, box.i1);
-    clipRange(std::ceil(cy - r - m_originY - margin), std::floor(cy + r - m_originY + margin),
-              m_periodicY ? -ny : 0, m_periodicY ? 2 * ny - 1 : ny - 1, m_periodicY ? ny : 0,
-              box.j0, box.j1);
-    if (box.i0 > box.i1 || box.j0 > box.j1) return Box{};
-    return box;
-}
-
-Coupling::Box Coupling::grainBox(std::size_t p) const {
+BounceBackCoupling::Box BounceBackCoupling::grainBox(std::size_t p) const {
     // A node is solid when its centre lies strictly inside r_h: these bounds hold every such node.
     Real cx, cy, r;
     grainGeometry(p, cx, cy, r);
     return clippedBox(cx, cy, r, 0);
 }
 
-void Coupling::findGrainChanges(std::size_t p, std::vector<Change>& out) const {
+void BounceBackCoupling::findGrainChanges(std::size_t p, std::vector<Change>& out) const {
     // Scan the grain's box now and the box it had: nodes it covers but does not own, and nodes it
     // owns but no longer covers (all of them lie in the old box). Nothing is written, so grains
     // scan in parallel.
@@ -94,8 +61,8 @@ void Coupling::findGrainChanges(std::size_t p, std::vector<Change>& out) const {
     }
 }
 
-void Coupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0, int i1, Real cx, Real r,
-                       std::vector<Change>& out) const {
+void BounceBackCoupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0, int i1, Real cx,
+                                 Real r, std::vector<Change>& out) const {
     const int nx = m_lattice.nx();
     const long long rowBase = m_lattice.index(0, j);
     // Nodes surely inside: at least one node inside the row's chord, so their distance to the
@@ -131,26 +98,22 @@ void Coupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0, int i1, 
     }
 }
 
-void Coupling::findChanges() {
-    const std::size_t n = m_dem.particles().size();
-    const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
-    if (m_threadChanges.size() < static_cast<std::size_t>(threads)) m_threadChanges.resize(threads);
-    for (auto& list : m_threadChanges)
-        list.clear();
-        // Static schedule: thread t takes the t-th block of grains, so the lists, read in thread
-        // order, hold the changes in grain order whatever the thread count.
-#pragma omp parallel num_threads(threads) if (threads > 1)
-    {
-        std::vector<Change>& out = m_threadChanges[ompThreadIndex()];
-#pragma omp for schedule(static)
-        for (long long p = 0; p < static_cast<long long>(n); ++p) {
-            findGrainChanges(static_cast<std::size_t>(p), out);
-            m_box[p] = grainBox(static_cast<std::size_t>(p));
-        }
-    }
+void BounceBackCoupling::findChanges() {
+    collectPerGrain(m_threadChanges, [this](std::size_t p, std::vector<Change>& out) {
+        findGrainChanges(p, out);
+        m_box[p] = grainBox(p);
+    });
 }
 
-void Coupling::applyChanges() {
+void BounceBackCoupling::offsetFromCentre(int iu, int ju, Real cx, Real cy, Real& dx,
+                                          Real& dy) const {
+    dx = iu + m_originX - cx;
+    dy = ju + m_originY - cy;
+    if (m_periodicX) dx -= m_lattice.nx() * std::round(dx / m_lattice.nx());
+    if (m_periodicY) dy -= m_lattice.ny() * std::round(dy / m_lattice.ny());
+}
+
+void BounceBackCoupling::applyChanges() {
     // Grains first leave nodes, then take nodes in grain order, the lowest index winning a node
     // two grains overlap. A node passing straight from one grain to another is not fluid at any
     // point: it is neither refilled nor swallowed.
@@ -170,9 +133,8 @@ void Coupling::applyChanges() {
                 // Fluid swallowed by the grain hands its momentum to it.
                 Real cx, cy, r;
                 grainGeometry(ch.grain, cx, cy, r);
-                Real dx = ch.iu + m_originX - cx, dy = ch.ju + m_originY - cy;
-                if (m_periodicX) dx -= m_lattice.nx() * std::round(dx / m_lattice.nx());
-                if (m_periodicY) dy -= m_lattice.ny() * std::round(dy / m_lattice.ny());
+                Real dx, dy;
+                offsetFromCentre(ch.iu, ch.ju, cx, cy, dx, dy);
                 long long slots[kQ];
                 m_lattice.postSlots(ch.cell, slots);
                 Real jx = 0, jy = 0;
@@ -190,7 +152,7 @@ void Coupling::applyChanges() {
         }
 }
 
-void Coupling::refillUncovered() {
+void BounceBackCoupling::refillUncovered() {
     // Refill (e.g. Peng et al. 2016): equilibrium at the mean density of the fluid neighbours and
     // the velocity of the surface that just left the node; the grain pays that momentum.
     for (const Change& c : m_uncovered) {
@@ -207,9 +169,8 @@ void Coupling::refillUncovered() {
         Real cx, cy, r, ux, uy;
         grainGeometry(c.grain, cx, cy, r);
         // Wrapped or not, the offset to the centre is taken modulo the periodic length.
-        Real dx = c.iu + m_originX - cx, dy = c.ju + m_originY - cy;
-        if (m_periodicX) dx -= m_lattice.nx() * std::round(dx / m_lattice.nx());
-        if (m_periodicY) dy -= m_lattice.ny() * std::round(dy / m_lattice.ny());
+        Real dx, dy;
+        offsetFromCentre(c.iu, c.ju, cx, cy, dx, dy);
         surfaceVelocity(c.grain, dx, dy, ux, uy);
         m_loadX[c.grain] -= rho * ux;
         m_loadY[c.grain] -= rho * uy;

@@ -14,7 +14,7 @@
 //      links applied, with their momentum exchange.
 // A surface node writes only its own populations and reads only fluid ones, so the nodes of pass 4
 // are independent; their loads sum per grain in grain order afterwards (any thread count).
-#include "solver/coupling/Coupling.h"
+#include "solver/coupling/BounceBackCoupling.h"
 
 #include "solver/core/OpenMp.h"
 #include "solver/coupling/DiscGeometry.h"
@@ -25,13 +25,6 @@
 
 namespace lbdem::solver::coupling {
 
-namespace {
-
-/// Fewer grains than this are searched on one thread: a parallel region costs more than their work.
-constexpr std::size_t kParallelGrains = 32;
-
-} // namespace
-
 using lattice::equilibrium;
 using lattice::kCx;
 using lattice::kCy;
@@ -39,7 +32,8 @@ using lattice::kOpposite;
 using lattice::kQ;
 using lattice::kW;
 
-void Coupling::mapBounceBack() {
+void BounceBackCoupling::placeGrains() {
+    if (m_box.size() != m_dem.particles().size()) m_box.assign(m_dem.particles().size(), Box{});
     findChanges();
     applyChanges();
     refillUncovered();
@@ -48,7 +42,7 @@ void Coupling::mapBounceBack() {
     m_initialised = true;
 }
 
-void Coupling::findSurfaceNodes() {
+void BounceBackCoupling::findSurfaceNodes() {
     const auto& g = m_dem.particles();
     const std::size_t n = g.size();
     const Real scale = m_params.dt / m_params.h;
@@ -59,17 +53,9 @@ void Coupling::findSurfaceNodes() {
         // u_w = (vx - w r_y, vy + w r_x), lattice units
         m_motion[p] = {r, g.vx[p] * scale, g.vy[p] * scale, g.omega[p] * m_params.dt};
     }
-    const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
-    if (m_threadSurface.size() < static_cast<std::size_t>(threads)) m_threadSurface.resize(threads);
-    for (auto& list : m_threadSurface)
-        list.clear();
-#pragma omp parallel num_threads(threads) if (threads > 1)
-    {
-        std::vector<SurfaceNode>& out = m_threadSurface[ompThreadIndex()];
-#pragma omp for schedule(static)
-        for (long long p = 0; p < static_cast<long long>(n); ++p)
-            findGrainSurface(static_cast<std::size_t>(p), out);
-    }
+    collectPerGrain(m_threadSurface, [this](std::size_t p, std::vector<SurfaceNode>& out) {
+        findGrainSurface(p, out);
+    });
     // Counting sort by row, stable: row by row, and within a row in grain order. Per row, the
     // columns within two rows of its surface nodes, which its links may touch (prefetched).
     const int ny = m_lattice.ny();
@@ -98,7 +84,7 @@ void Coupling::findSurfaceNodes() {
             m_surface[m_rowStart[node.j]++] = node;
 }
 
-void Coupling::findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) const {
+void BounceBackCoupling::findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) const {
     Real cx, cy, r;
     grainGeometry(p, cx, cy, r);
     const Box& box = m_box[p];
@@ -228,8 +214,8 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
 
 /// Node access through the lattice's own accessors, wrapping across periodic sides: for surface
 /// nodes within two nodes of an edge of the lattice.
-struct Coupling::EdgeAccess {
-    const Coupling& c;
+struct BounceBackCoupling::EdgeAccess {
+    const BounceBackCoupling& c;
     lattice::Lattice& lattice;
 
     long long neighbour(long long cell, int dir) const {
@@ -246,13 +232,13 @@ struct Coupling::EdgeAccess {
     }
 };
 
-std::size_t Coupling::linkSurfaceNodes() {
+std::size_t BounceBackCoupling::linkSurfaceNodes() {
     return m_lattice.storage() == lattice::PopulationStorage::Float
                ? linkSurfaceNodesStored(m_lattice.storedFloats())
                : linkSurfaceNodesStored(m_lattice.storedDoubles());
 }
 
-template <class S> std::size_t Coupling::linkSurfaceNodesStored(S* stored) {
+template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* stored) {
     constexpr int kPrefetchRows = 5; // the links of row j touch rows j - 2 .. j + 2
     constexpr int kPerLine = 64 / static_cast<int>(sizeof(S));
     InteriorAccess<S> interior{stored, m_lattice.flags(), m_owner.data(), {}, {}};
@@ -295,12 +281,8 @@ template <class S> std::size_t Coupling::linkSurfaceNodesStored(S* stored) {
         m_surfaceLoad[3 * k + 2] = loadT;
     }
     // Per grain in list order: fixed by the grains' positions, whatever the thread count.
-    for (std::size_t k = 0; k < m_surface.size(); ++k) {
-        const std::int32_t p = m_surface[k].grain;
-        m_loadX[p] += m_surfaceLoad[3 * k];
-        m_loadY[p] += m_surfaceLoad[3 * k + 1];
-        m_loadT[p] += m_surfaceLoad[3 * k + 2];
-    }
+    addEntryLoads(m_surfaceLoad, m_surface.size(),
+                  [this](std::size_t k) { return m_surface[k].grain; });
     return links;
 }
 

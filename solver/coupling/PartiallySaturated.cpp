@@ -1,23 +1,39 @@
 // Partially saturated cells (Noble & Torczynski 1998): solid fractions, weighted solid collision,
 // loads.
-#include "solver/coupling/Coupling.h"
+#include "solver/coupling/PsmCoupling.h"
 
+#include "solver/core/InputError.h"
 #include "solver/coupling/DiscGeometry.h"
 #include "solver/lattice/Collision.h"
 #include "solver/lattice/D2Q9.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace lbdem::solver::coupling {
 
-using lattice::equilibrium;
-using lattice::kCx;
-using lattice::kCy;
-using lattice::kOpposite;
-using lattice::kQ;
+// The cells' collision works in the lattice's own terms throughout (velocity set, equilibrium,
+// operators and their dispatch).
+using namespace lattice;
 
-void Coupling::mapPsm() {
+PsmCoupling::PsmCoupling(lattice::Lattice& lattice, dem::DemSystem& dem,
+                         const CouplingParams& params)
+    : Coupling(lattice, dem, params) {}
+
+void PsmCoupling::collectForces() {
+    collidePsm();
+    handOverLoads(nullptr);
+}
+
+void PsmCoupling::restore(const CouplingState& state) {
+    if (!state.cells.empty() || !state.grains.empty())
+        throw InputError("coupling state: partially saturated cells keep no covered nodes, but " +
+                         std::to_string(state.cells.size()) + " are given");
+    resizeGrains();
+}
+
+void PsmCoupling::placeGrains() {
     // eps of a cell = exact area of the unit cell covered by the disc of radius r_h. A cell two
     // grains overlap keeps one entry per grain; its total fraction is clipped at 1.
     for (long long c : m_psmCells)
@@ -132,8 +148,7 @@ static void psmCell(const PsmContext& ctx, const C& collide, const Real* incomin
         ctx.lattice->setPopulation(slots[q], q, out[q]);
 }
 
-void Coupling::collidePsm() {
-    using namespace lattice;
+void PsmCoupling::collidePsm() {
     const LatticeSetup& s = m_lattice.setup();
     const CollisionParams& p = s.collision;
     const Real* incoming = m_lattice.recordedIncoming().data();
@@ -162,42 +177,15 @@ void Coupling::collidePsm() {
         slots[k + 2] = t;
     };
     const long long groups = static_cast<long long>(m_linkStart.size()) - 1;
-    auto run = [&](const auto& collide) {
+    // The bulk kernel's operator and parameters (Lattice::step), so a cell with B = 0 is
+    // unchanged.
+    withCollision(p, s.fx, s.fy, [&](const auto& collide) {
 #pragma omp parallel for schedule(static) if (groups > kParallelMin)
         for (long long g = 0; g < groups; ++g)
             psmCell(ctx, collide, incoming + g * kQ, base + m_linkStart[g],
                     base + m_linkStart[g + 1], surface, addLoad);
-    };
-    // The same operator, parameters and dispatch as Lattice::step, so a cell with B = 0 is
-    // unchanged.
-    const bool force = s.fx != 0 || s.fy != 0;
-    const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
-    switch (p.model) {
-    case CollisionModel::Bgk:
-        if (force)
-            run(BgkCollision<true>{sNu, s.fx, s.fy});
-        else
-            run(BgkCollision<false>{sNu, s.fx, s.fy});
-        break;
-    case CollisionModel::Mrt:
-        if (force)
-            run(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        else
-            run(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        break;
-    case CollisionModel::MrtLes:
-        if (force)
-            run(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        else
-            run(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, s.fx, s.fy});
-        break;
-    }
-    for (std::size_t k = 0; k < m_psm.size(); ++k) {
-        const std::int32_t g = m_psm[k].grain;
-        m_loadX[g] += slots[3 * k];
-        m_loadY[g] += slots[3 * k + 1];
-        m_loadT[g] += slots[3 * k + 2];
-    }
+    });
+    addEntryLoads(m_linkLoad, m_psm.size(), [base](std::size_t k) { return base[k].grain; });
 }
 
 } // namespace lbdem::solver::coupling

@@ -18,26 +18,28 @@ double since(Clock::time_point start) {
 
 } // namespace
 
+PackingRequest defaultBenchPile() {
+    PackingRequest request;
+    request.count = 10000;
+    request.aspect_ratio = 0.25;
+    request.fixed_friction = true;
+    return request;
+}
+
 DemBenchResult runDemBench(const DemBenchConfig& config) {
     DemBenchResult result;
-    PackingRequest request;
-    request.count = config.particles;
-    request.d_min = config.d_min;
-    request.size_ratio = config.size_ratio;
-    request.aspect_ratio = config.aspect_ratio;
-    request.material = config.material;
-    request.fixed_friction = true; // any settled pile will do; no search for a fraction
+    const Material& material = config.pile.material;
     const auto pileStart = Clock::now();
-    const Packing pile = generatePacking(request, config.packing);
+    const Packing pile = generatePacking(config.pile, config.packing);
     result.pile_seconds = since(pileStart);
     result.pile_from_cache = pile.from_cache;
     result.packing_fraction = pile.fraction;
-    const Real lightest = discMass(config.d_min / 2, config.material.density);
+    const Real lightest = discMass(config.pile.d_min / 2, material.density);
     // The same step rule as the plan: dt_safety times the binary contact time of the lightest pair.
-    result.dt = config.dt_safety * contactDuration(config.material.normal_stiffness, lightest / 2,
-                                                   config.material.restitution);
+    result.dt = config.dt_safety *
+                contactDuration(material.normal_stiffness, lightest / 2, material.restitution);
     for (int threads : config.threads) {
-        DemSystem system(config.material);
+        DemSystem system(material);
         system.reserve(pile.x.size());
         system.addWall(Vec2(0, 0), Vec2(pile.width, 0));
         system.addWall(Vec2(0, 0), Vec2(0, 4 * pile.height));

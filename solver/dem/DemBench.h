@@ -10,14 +10,15 @@
 
 namespace lbdem::solver::dem {
 
+/// The pile measured by default: 10000 discs of the packing generator's default sizes, in a wide,
+/// low pile (a = 0.25) that deposits quickly, deposited once with the material's own friction
+/// (any settled pile will do; no search for a packing fraction).
+PackingRequest defaultBenchPile();
+
 /// What to measure. The contact law and sizes default to the paper's (docs/design.md §5b).
 struct DemBenchConfig {
-    int particles = 10000;    ///< discs in the pile
-    Real d_min = 1.2e-3;      ///< smallest diameter [m]
-    Real size_ratio = 1.8;    ///< d_max / d_min
-    Real aspect_ratio = 0.25; ///< a wide, low pile: deposits quickly
-    Real dt_safety = 0.02;    ///< step as a fraction of the binary contact time (as in the plan)
-    Material material;        ///< contact law
+    PackingRequest pile = defaultBenchPile(); ///< discs, their contact law and the pile's shape
+    Real dt_safety = 0.02; ///< step as a fraction of the binary contact time (as in the plan)
     std::vector<int> threads{1, 2}; ///< thread counts to measure
     int steps = 2000;               ///< steps per timed repeat
     int repeats = 3;                ///< timed repeats per thread count (median and best reported)

@@ -50,25 +50,16 @@ void DemSystem::restoreContactHistory(const std::vector<ContactHistory>& history
     std::sort(walls.begin(), walls.end(), byIndex);
     m_oldStart.assign(n + 1, 0);
     m_oldSlots.clear();
+    // The springs carry over; the rest of a slot is filled by the next force evaluation.
     for (const ContactHistory& h : pairs) {
-        PairSlot s;
-        s.j = h.j;
-        s.ut = h.ut;
-        s.ur = h.ur;
-        m_oldSlots.push_back(s);
+        m_oldSlots.push_back(PairSlot{h.j, h.ut, h.ur});
         ++m_oldStart[h.i + 1];
     }
     for (std::size_t i = 0; i < n; ++i)
         m_oldStart[i + 1] += m_oldStart[i];
     m_oldWallSlots.clear();
-    for (const ContactHistory& h : walls) {
-        WallSlot s;
-        s.i = h.i;
-        s.wall = h.j;
-        s.ut = h.ut;
-        s.ur = h.ur;
-        m_oldWallSlots.push_back(s);
-    }
+    for (const ContactHistory& h : walls)
+        m_oldWallSlots.push_back(WallSlot{h.i, h.j, h.ut, h.ur});
     m_haveOld = true;
     m_restorePending = true;
     m_rebuild = true;

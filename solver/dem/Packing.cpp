@@ -21,11 +21,15 @@ namespace {
 constexpr Real kSoften = 10;
 constexpr Real kPrepRestitution =
     0.5; // explicit tangential dashpots of many sticking contacts limit the damping
-constexpr Real kPrepStepFraction = 0.05; // deposition step as a fraction of the contact time
-constexpr Real kRelaxStepFraction = 0.05;
+constexpr Real kPrepStepFraction = 0.05;  // deposition step as a fraction of the contact time
+constexpr Real kRelaxStepFraction = 0.05; // relaxation step, likewise
+// The deposition friction is searched in [0, kMaxPrepFriction], at most kMaxDepositions times.
 constexpr Real kMaxPrepFriction = 1.0;
-constexpr Real kPrepRollingResistance = 0.05;
 constexpr int kMaxDepositions = 10;
+// Rolling resistance during deposition (the run's own applies in the final relaxation).
+constexpr Real kPrepRollingResistance = 0.05;
+// The relaxation stiffens the contacts back to the run's in kRelaxStages geometric stages of
+// kRelaxStageSteps steps each.
 constexpr int kRelaxStages = 8;
 constexpr int kRelaxStageSteps = 400;
 

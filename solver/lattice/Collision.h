@@ -187,4 +187,40 @@ template <bool kLes, bool kForce> struct MrtCollision {
     }
 };
 
+/// MRT without and with the LES shear rate, as operators of the force flag alone.
+template <bool kForce> using MrtPlain = MrtCollision<false, kForce>;
+template <bool kForce> using MrtWithLes = MrtCollision<true, kForce>;
+
+/// visit(Op<true>{parameters...}) when `force`, else visit(Op<false>{parameters...}).
+template <template <bool> class Op, class Visit, class... Parameters>
+void withForceVariant(bool force, const Visit& visit, Parameters... parameters) {
+    if (force)
+        visit(Op<true>{parameters...});
+    else
+        visit(Op<false>{parameters...});
+}
+
+/// Call visit(collide) once with the operator of `params` and the body force (fx, fy) (Guo; the
+/// force-free variants when both are 0): the one place the model and the force select a kernel,
+/// shared by the bulk step and the partially saturated cells so that both collide alike. Each
+/// branch instantiates visit for one concrete operator, so the node loop it runs is fully inlined.
+template <class Visit>
+void withCollision(const CollisionParams& params, Real fx, Real fy, const Visit& visit) {
+    const CollisionParams& p = params;
+    const bool force = fx != 0 || fy != 0;
+    const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
+    switch (p.model) {
+    case CollisionModel::Bgk:
+        withForceVariant<BgkCollision>(force, visit, sNu, fx, fy);
+        break;
+    case CollisionModel::Mrt:
+        withForceVariant<MrtPlain>(force, visit, sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy);
+        break;
+    case CollisionModel::MrtLes:
+        withForceVariant<MrtWithLes>(force, visit, sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx,
+                                     fy);
+        break;
+    }
+}
+
 } // namespace lbdem::solver::lattice

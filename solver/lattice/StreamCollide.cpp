@@ -31,81 +31,59 @@ template <class S, class C> LBDEM_KERNEL_INLINE void collideStored(const C& coll
     collide.template apply<S, std::is_same_v<S, float>>(g);
 }
 
-/// AA step from an even step count: every node reads its own nine values (the populations that
-/// arrived, f_i in slot i), collides, and stores f*_i in its own slot opp(i). S is the stored
-/// number (double, or float holding f_i - w_i), and the arithmetic: no conversion on the way.
-/// Rows are swept in the order of sweepRows.
+/// One AA step over the stored values f (S: double, or float holding f_i - w_i, which is also the
+/// arithmetic: no conversion on the way). Node x reads the nine populations that arrived and
+/// writes its nine post-collision values f*_i back to the same nine places, owned by x alone, so
+/// the update is in place and free of races between nodes, rows and threads:
+///  - from an even step count (kStream false) they are its own slots: f_i arrived in slot i, f*_i
+///    goes to slot opp(i);
+///  - from an odd one (kStream true), f_i arrived in slot opp(i) of x - c_i, where that neighbour
+///    left it, and f*_i goes to slot i of x + c_i (periodic wrap on all sides).
+/// Written as q_i, the place f*_i goes, both read f_i from q_opp(i). Rows are swept in the order
+/// of sweepRows.
 /// Pre: the boundary passes have filled the slots that solid neighbours send into the fluid.
-template <class S, class C>
-void collideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow,
-                    const C& collide) {
+template <bool kStream, class S, class C>
+void aaSweep(S* __restrict f, int nx, int ny, long long cells, int lastRow, const C& collide) {
     sweepRows(
         ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
             const long long row = static_cast<long long>(y) * nx;
-            S* __restrict p0 = f + row;
-            S* __restrict p1 = f + cells + row;
-            S* __restrict p2 = f + 2 * cells + row;
-            S* __restrict p3 = f + 3 * cells + row;
-            S* __restrict p4 = f + 4 * cells + row;
-            S* __restrict p5 = f + 5 * cells + row;
-            S* __restrict p6 = f + 6 * cells + row;
-            S* __restrict p7 = f + 7 * cells + row;
-            S* __restrict p8 = f + 8 * cells + row;
-            auto node = [&](int x) __attribute__((always_inline)) {
-                S g[9] = {p0[x], p1[x], p2[x], p3[x], p4[x], p5[x], p6[x], p7[x], p8[x]};
+            long long rowN = row, rowS = row;
+            if (kStream) {
+                rowN = static_cast<long long>(y + 1 == ny ? 0 : y + 1) * nx;
+                rowS = static_cast<long long>(y == 0 ? ny - 1 : y - 1) * nx;
+            }
+            // Slot of q_i: i after an odd step count, opp(i) after an even one.
+            auto slot = [](int i, int opposite) { return kStream ? i : opposite; };
+            S* __restrict q0 = f + row;
+            S* __restrict q1 = f + slot(1, 3) * cells + row;
+            S* __restrict q2 = f + slot(2, 4) * cells + rowN;
+            S* __restrict q3 = f + slot(3, 1) * cells + row;
+            S* __restrict q4 = f + slot(4, 2) * cells + rowS;
+            S* __restrict q5 = f + slot(5, 7) * cells + rowN;
+            S* __restrict q6 = f + slot(6, 8) * cells + rowN;
+            S* __restrict q7 = f + slot(7, 5) * cells + rowS;
+            S* __restrict q8 = f + slot(8, 6) * cells + rowS;
+            // xm, xp: the columns of x - 1 and x + 1 (both x without streaming).
+            auto node = [&](int x, int xm, int xp) __attribute__((always_inline)) {
+                S g[9] = {q0[x], q3[xm], q4[x], q1[xp], q2[x], q7[xm], q8[xp], q5[xp], q6[xm]};
                 collideStored(collide, g);
-                p0[x] = g[0];
-                p3[x] = g[1];
-                p4[x] = g[2];
-                p1[x] = g[3];
-                p2[x] = g[4];
-                p7[x] = g[5];
-                p8[x] = g[6];
-                p5[x] = g[7];
-                p6[x] = g[8];
+                q0[x] = g[0];
+                q1[xp] = g[1];
+                q2[x] = g[2];
+                q3[xm] = g[3];
+                q4[x] = g[4];
+                q5[xp] = g[5];
+                q6[xm] = g[6];
+                q7[xm] = g[7];
+                q8[xp] = g[8];
             };
             // Each node touches only its own values, so the loop carries no dependence.
+            if (!kStream) {
 #pragma omp simd
-            for (int x = 0; x < nx; ++x)
-                node(x);
-        });
-}
-
-/// AA step from an odd step count: node x finds the population arriving along c_i in slot
-/// opp(i) of x - c_i (where the neighbour left it), collides, and writes f*_i to slot i of
-/// x + c_i. The nine values read and written are the same nine, owned by x alone, so the update
-/// is in place and free of races between nodes, rows and threads. Periodic wrap on all sides.
-/// Stored values convert and rows are swept as in collideInPlace.
-template <class S, class C>
-void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, int lastRow,
-                          const C& collide) {
-    sweepRows(
-        ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
-            const long long row = static_cast<long long>(y) * nx;
-            const long long rowN = static_cast<long long>(y + 1 == ny ? 0 : y + 1) * nx;
-            const long long rowS = static_cast<long long>(y == 0 ? ny - 1 : y - 1) * nx;
-            S* __restrict p0 = f + row; // slot i of x + c_i, by direction i
-            S* __restrict p1 = f + cells + row;
-            S* __restrict p2 = f + 2 * cells + rowN;
-            S* __restrict p3 = f + 3 * cells + row;
-            S* __restrict p4 = f + 4 * cells + rowS;
-            S* __restrict p5 = f + 5 * cells + rowN;
-            S* __restrict p6 = f + 6 * cells + rowN;
-            S* __restrict p7 = f + 7 * cells + rowS;
-            S* __restrict p8 = f + 8 * cells + rowS;
-            auto node = [&](int x, int xm, int xp) __attribute__((always_inline)) {
-                S g[9] = {p0[x], p3[xm], p4[x], p1[xp], p2[x], p7[xm], p8[xp], p5[xp], p6[xm]};
-                collideStored(collide, g);
-                p0[x] = g[0];
-                p1[xp] = g[1];
-                p2[x] = g[2];
-                p3[xm] = g[3];
-                p4[x] = g[4];
-                p5[xp] = g[5];
-                p6[xm] = g[6];
-                p7[xm] = g[7];
-                p8[xp] = g[8];
-            };
+                for (int x = 0; x < nx; ++x)
+                    node(x, x, x);
+                return;
+            }
             node(0, nx - 1, 1 % nx);
 #pragma omp simd
             for (int x = 1; x < nx - 1; ++x)
@@ -118,9 +96,9 @@ void streamCollideInPlace(S* __restrict f, int nx, int ny, long long cells, int 
 template <class S, class C>
 void aaStep(S* f, bool odd, int nx, int ny, long long cells, int lastRow, const C& collide) {
     if (odd)
-        streamCollideInPlace(f, nx, ny, cells, lastRow, collide);
+        aaSweep<true>(f, nx, ny, cells, lastRow, collide);
     else
-        collideInPlace(f, nx, ny, cells, lastRow, collide);
+        aaSweep<false>(f, nx, ny, cells, lastRow, collide);
 }
 
 /// f[slot] = f[source] + add for every copy link, on the stored values: source and slot hold
@@ -244,31 +222,8 @@ template <class C> void Lattice::runStep(const C& collide) {
 }
 
 void Lattice::step() {
-    const CollisionParams& p = m_setup.collision;
-    const Real fx = m_setup.fx, fy = m_setup.fy;
-    const bool force = fx != 0 || fy != 0;
-    const Real sNu = 1.0 / p.tau, c2x18 = 18.0 * p.smagorinsky * p.smagorinsky;
-    // One dispatch per step: each branch runs a fully inlined kernel for one model.
-    switch (p.model) {
-    case CollisionModel::Bgk:
-        if (force)
-            runStep(BgkCollision<true>{sNu, fx, fy});
-        else
-            runStep(BgkCollision<false>{sNu, fx, fy});
-        break;
-    case CollisionModel::Mrt:
-        if (force)
-            runStep(MrtCollision<false, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else
-            runStep(MrtCollision<false, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        break;
-    case CollisionModel::MrtLes:
-        if (force)
-            runStep(MrtCollision<true, true>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        else
-            runStep(MrtCollision<true, false>{sNu, p.s_e, p.s_eps, p.s_q, p.tau, c2x18, fx, fy});
-        break;
-    }
+    withCollision(m_setup.collision, m_setup.fx, m_setup.fy,
+                  [this](const auto& collide) { runStep(collide); });
 }
 
 } // namespace lbdem::solver::lattice

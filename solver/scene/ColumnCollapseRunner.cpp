@@ -100,7 +100,8 @@ public:
         m_params.initial_potential_j_m = initialPotential();
         if (plan.has_fluid) {
             m_lattice.emplace(columnLatticeSetup(spec, plan));
-            m_coupling.emplace(*m_lattice, m_column.system(), couplingParams(spec, plan));
+            m_coupling =
+                coupling::makeCoupling(*m_lattice, m_column.system(), couplingParams(spec, plan));
             m_layer.emplace(*m_lattice, absorbingLayerSetup(spec));
             m_guard.emplace(plan.h_m);
         }
@@ -319,7 +320,7 @@ private:
     ColumnScene m_column;
     MassDiagnosticsParams m_params;
     std::optional<lattice::Lattice> m_lattice;
-    std::optional<coupling::Coupling> m_coupling;
+    std::unique_ptr<coupling::Coupling> m_coupling;
     std::optional<lattice::StabilityGuard> m_guard;
     std::optional<lattice::AbsorbingLayer>
         m_layer; // sponge inside the pressure sides (may hold no node)

@@ -36,22 +36,15 @@ std::map<std::string, double> FlowScene::metrics() const {
     m["max_mach"] = std::sqrt(maxU2 / lattice::kCs2);
     m["mass_lattice"] = lat.totalMass();
     m["time_s"] = timeS();
-    switch (m_kind) {
-    case SceneKind::Poiseuille:
-        metricsPoiseuille(m);
-        break;
-    case SceneKind::TaylorGreen:
-        metricsTaylorGreen(m);
-        break;
-    case SceneKind::Cavity:
-        metricsCavity(m);
-        break;
-    case SceneKind::Cylinder:
-        metricsCylinder(m);
-        break;
-    default:
-        break;
-    }
+    // Each scene's own metrics, by scene.
+    using SceneMetrics = void (FlowScene::*)(std::map<std::string, double>&) const;
+    static const std::map<SceneKind, SceneMetrics> kSceneMetrics = {
+        {SceneKind::Poiseuille, &FlowScene::metricsPoiseuille},
+        {SceneKind::TaylorGreen, &FlowScene::metricsTaylorGreen},
+        {SceneKind::Cavity, &FlowScene::metricsCavity},
+        {SceneKind::Cylinder, &FlowScene::metricsCylinder}};
+    if (const auto own = kSceneMetrics.find(m_kind); own != kSceneMetrics.end())
+        (this->*own->second)(m);
     return m;
 }
 

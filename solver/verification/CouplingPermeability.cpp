@@ -94,7 +94,7 @@ std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method
         params.method = method;
         params.hydro_radius_ratio = ratio;
         params.psm_weight = coupling::PsmWeight::Nt;
-        coupling::Coupling link(lattice, grains, params);
+        const auto link = coupling::makeCoupling(lattice, grains, params);
         // Body-force-driven flow through the fixed packing until the superficial momentum
         // (sum of (1 - solid fraction) rho u_x over the box) changes by < 1e-6 relative per 500
         // steps. Momentum rather than velocity: interpolated bounce-back leaks a little mass, and
@@ -102,15 +102,15 @@ std::vector<PermeabilityPoint> permeabilitySweep(coupling::CouplingMethod method
         Real u = 0, last = 0;
         for (long long steps = 0; steps < 200000;) {
             for (int k = 0; k < 500; ++k, ++steps) {
-                link.mapGrains();
+                link->mapGrains();
                 lattice.step();
-                link.collectForces();
+                link->collectForces();
             }
             Real sum = 0;
             for (long long c = 0; c < lattice.cells(); ++c) {
                 Real ux, uy;
                 lattice.velocity(c, ux, uy);
-                sum += (1 - link.solidFraction()[c]) * lattice.density(c) * ux;
+                sum += (1 - link->solidFraction()[c]) * lattice.density(c) * ux;
             }
             u = sum / static_cast<Real>(lattice.cells());
             if (!std::isfinite(u)) break;

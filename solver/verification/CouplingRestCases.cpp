@@ -54,15 +54,15 @@ double restForceRatio(CouplingMethod method, const std::vector<std::pair<double,
     dem::DemSystem grains(material, 0.0);
     for (const auto& [x, y] : centres)
         grains.addDisc(x, y, radius);
-    coupling::Coupling link(lattice, grains, params);
+    const auto link = coupling::makeCoupling(lattice, grains, params);
     const double buoyantWeight = (kRhoS - kRhoF) * kGravity * kPi * radius * radius;
     double worst = 0;
     for (int step = 0; step < kRestSteps; ++step) {
-        link.mapGrains();
+        link->mapGrains();
         lattice.step();
-        link.collectForces();
+        link->collectForces();
         for (std::size_t p = 0; p < centres.size(); ++p) {
-            const coupling::GrainLoad load = link.load(p);
+            const coupling::GrainLoad load = link->load(p);
             const double force = std::hypot(load.fx, load.fy);
             worst = std::max(worst, std::isfinite(force) ? force / buoyantWeight : 1e300);
         }

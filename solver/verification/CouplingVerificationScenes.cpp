@@ -22,20 +22,21 @@ using Clock = std::chrono::steady_clock;
 /// Lattice, grains and their coupling, stepped in the order a coupled simulation uses.
 struct Rig {
     Rig(const LatticeSetup& setup, const dem::Material& material, const CouplingParams& params)
-        : lattice(setup), grains(material, 0.0), link(lattice, grains, params) {}
+        : lattice(setup), grains(material, 0.0),
+          link(coupling::makeCoupling(lattice, grains, params)) {}
 
     /// One fluid step; the grains move (n_s sub-steps of dt / n_s) only when dtGrains > 0.
     void step(Real dtGrains, int substeps) {
-        link.mapGrains();
+        link->mapGrains();
         lattice.step();
-        link.collectForces();
+        link->collectForces();
         if (dtGrains > 0) grains.advance(dtGrains, substeps);
     }
 
     /// Superficial momentum along x: sum over fluid nodes of (1 - solid fraction) rho u_x / count.
     /// (Darcy's law mu U = K F with mu = rho nu holds whatever density the links have leaked to.)
     Real superficialMomentumX() const {
-        const auto& solid = link.solidFraction();
+        const auto& solid = link->solidFraction();
         Real sum = 0;
         long long count = 0;
         for (long long c = 0; c < lattice.cells(); ++c) {
@@ -50,7 +51,7 @@ struct Rig {
 
     lattice::Lattice lattice;
     dem::DemSystem grains;
-    coupling::Coupling link;
+    std::unique_ptr<coupling::Coupling> link;
 };
 
 /// MRT whose bounce-back walls sit half-way independently of tau: Lambda = (tau - 1/2)(1/s_q - 1/2)

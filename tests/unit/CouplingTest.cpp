@@ -1,5 +1,6 @@
 // Coupling: disc-cell overlap areas, Galilean invariance, momentum conservation, SI load hand-over.
-#include "solver/coupling/Coupling.h"
+#include "solver/core/InputError.h"
+#include "solver/coupling/BounceBackCoupling.h"
 #include "solver/coupling/DiscGeometry.h"
 #include "solver/lattice/D2Q9.h"
 
@@ -64,6 +65,7 @@ private slots:
     void momentumConservation();
     void loadsReachDemInSi();
     void restartIsBitForBit();
+    void psmStateIsEmpty();
     void cornerGrainStaysBounded();
     void threadCountDoesNotMatter();
     void farGrainsScanNoFurtherThanTheLattice();
@@ -138,7 +140,8 @@ void CouplingTest::galileanInvariance() {
         dem::DemSystem dem;
         dem.addDisc(20.3, 24.1, radius);
         dem.particles().vx[0] = u;
-        coupling::Coupling link(lat, dem, latticeUnits(method));
+        const auto linkOwned = coupling::makeCoupling(lat, dem, latticeUnits(method));
+        coupling::Coupling& link = *linkOwned;
         double sumX = 0, sumY = 0;
         for (int step = 0; step < 200; ++step) {
             link.mapGrains();
@@ -176,7 +179,8 @@ void CouplingTest::momentumConservation() {
     });
     dem::DemSystem dem;
     dem.addDisc(19.7, 20.2, 7.3);
-    coupling::Coupling link(lat, dem, latticeUnits(method));
+    const auto linkOwned = coupling::makeCoupling(lat, dem, latticeUnits(method));
+    coupling::Coupling& link = *linkOwned;
     for (int step = 0; step < 30; ++step) {
         link.mapGrains();
         double jx0, jy0, jx1, jy1;
@@ -212,7 +216,8 @@ void CouplingTest::loadsReachDemInSi() {
     p.rho_f = 1000;
     dem.addDisc(16.2e-4, 15.9e-4, 5e-4);
     dem.computeForces();
-    coupling::Coupling link(lat, dem, p);
+    const auto linkOwned = coupling::makeCoupling(lat, dem, p);
+    coupling::Coupling& link = *linkOwned;
     coupling::GrainLoad before;
     for (int step = 0; step < 3; ++step) {
         before = link.latticeLoad(0);
@@ -260,7 +265,9 @@ void CouplingTest::restartIsBitForBit() {
     lattice::Lattice a(periodicBox(40));
     dem::DemSystem demA;
     make(a, demA);
-    coupling::Coupling linkA(a, demA, latticeUnits(CouplingMethod::BounceBack));
+    const auto linkAOwned =
+        coupling::makeCoupling(a, demA, latticeUnits(CouplingMethod::BounceBack));
+    coupling::Coupling& linkA = *linkAOwned;
     run(a, demA, linkA, 25);
     const std::vector<double> f = a.exportPopulations();
     const long long steps = a.stepCount(); // the population layout depends on its parity
@@ -273,7 +280,9 @@ void CouplingTest::restartIsBitForBit() {
     lattice::Lattice b(periodicBox(40));
     dem::DemSystem demB;
     make(b, demB);
-    coupling::Coupling linkB(b, demB, latticeUnits(CouplingMethod::BounceBack));
+    const auto linkBOwned =
+        coupling::makeCoupling(b, demB, latticeUnits(CouplingMethod::BounceBack));
+    coupling::Coupling& linkB = *linkBOwned;
     b.importPopulations(f);
     b.setStepCount(steps);
     demB.particles() = grains;
@@ -284,6 +293,27 @@ void CouplingTest::restartIsBitForBit() {
     QVERIFY(a.exportPopulations() == b.exportPopulations());
     QVERIFY(linkA.latticeLoad(0).fx == linkB.latticeLoad(0).fx);
     QVERIFY(linkA.latticeLoad(0).torque == linkB.latticeLoad(0).torque);
+}
+
+void CouplingTest::psmStateIsEmpty() {
+    // Partially saturated cells keep nothing between steps: their state is the empty one, it
+    // restores, and a state with covered nodes (a bounce-back checkpoint) is refused.
+    lattice::Lattice lat(periodicBox(40));
+    dem::DemSystem dem;
+    dem.addDisc(15.3, 20.6, 6.2);
+    const auto link = coupling::makeCoupling(lat, dem, latticeUnits(CouplingMethod::Psm));
+    link->mapGrains();
+    lat.step();
+    link->collectForces();
+    QVERIFY(link->boundaryCount() > 0);
+    const coupling::CouplingState state = link->state();
+    QVERIFY(state.cells.empty() && state.grains.empty() && !state.initialised &&
+            state.previous_loads.empty());
+    link->restore(state);
+    coupling::CouplingState covered;
+    covered.cells = {lat.index(15, 20)};
+    covered.grains = {0};
+    QVERIFY_EXCEPTION_THROWN(link->restore(covered), InputError);
 }
 
 void CouplingTest::cornerGrainStaysBounded() {
@@ -313,7 +343,8 @@ void CouplingTest::cornerGrainStaysBounded() {
     p.dt = dt;
     p.rho_f = 1000;
     p.hydro_radius_ratio = 0.9;
-    coupling::Coupling link(lat, dem, p);
+    const auto linkOwned = coupling::makeCoupling(lat, dem, p);
+    coupling::Coupling& link = *linkOwned;
     double worstU = 0, worstV = 0;
     for (int step = 0; step < 400; ++step) {
         link.mapGrains();
@@ -360,7 +391,9 @@ void CouplingTest::threadCountDoesNotMatter() {
             dem.particles().vy[p] = 0.05 * std::cos(3 * k);
             dem.particles().omega[p] = 0.002 * (k % 3 - 1);
         }
-        coupling::Coupling link(lat, dem, latticeUnits(CouplingMethod::BounceBack));
+        const auto linkOwned =
+            coupling::makeCoupling(lat, dem, latticeUnits(CouplingMethod::BounceBack));
+        coupling::Coupling& link = *linkOwned;
         for (int step = 0; step < 12; ++step) {
             link.mapGrains();
             lat.step();
@@ -401,7 +434,7 @@ void CouplingTest::farGrainsScanNoFurtherThanTheLattice() {
         dem.addDisc(30.2, 30.7, 6.5);
         dem.addDisc(12.4, 40.1, 5.5);
         dem.addDisc(45.4, 12.1, 5.5);
-        coupling::Coupling link(lat, dem, latticeUnits(CouplingMethod::BounceBack));
+        coupling::BounceBackCoupling link(lat, dem, latticeUnits(CouplingMethod::BounceBack));
         link.mapGrains();
         lat.step();
         link.collectForces();
