@@ -122,7 +122,8 @@ WindowFlowResult measureWindowPermeability(const WindowFlowSetup& s) {
     coupling::CouplingParams params; // lattice units: h = dt = rho_f = 1
     params.method = s.method;
     params.hydro_radius_ratio = s.hydro_radius_ratio;
-    coupling::Coupling link(lattice, grains, params);
+    const auto coupling = coupling::makeCoupling(lattice, grains, params);
+    coupling::Coupling& link = *coupling;
     const Real nu = (s.collision.tau - 0.5) / 3;
     WindowFlowResult result;
     Real last = 0, lastChange = 0;
