@@ -119,7 +119,7 @@ void RunDriver::writeSummary(bool finished, const std::string& stopReason) {
     nlohmann::json summary{
         {"case", m_simulation.spec().name},
         {"finished", finished},
-        {"scene", m_simulation.spec().scene},
+        {"scene", solver::enumWord(m_simulation.spec().scene)},
         {"plan",
          {{"h", plan.h_m},
           {"dt", plan.dt_s},

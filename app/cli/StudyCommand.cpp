@@ -163,11 +163,12 @@ std::vector<Job> prepare(const StudyOptions& options, StudySpec& study) {
         if (std::find(study.keys.begin(), study.keys.end(), "output.vtk") == study.keys.end())
             overrides.push_back("output.vtk=false");
         const solver::CaseSpec spec = io::loadCase(options.caseOptions.path, overrides);
-        const auto kind = solver::sceneFromName(spec.scene);
+        const auto kind = spec.scene;
         if (!solver::isFlowScene(kind) && kind != solver::SceneKind::ColumnCollapse)
             throw solver::InputError(
                 options.caseOptions.path, 0, "scene",
-                "'" + spec.scene + "' is run by `lbdem verify` only, so it cannot be studied");
+                std::string("'") + solver::enumWord(kind) +
+                    "' is run by `lbdem verify` only, so it cannot be studied");
         solver::makePlan(spec);
         const std::string metricName =
             options.metric.empty() ? defaultStudyMetric(spec) : options.metric;
@@ -181,8 +182,8 @@ std::vector<Job> prepare(const StudyOptions& options, StudySpec& study) {
                                      "); choose one with --metric");
         }
         if (options.reference == "analytic" && !metric.analytic)
-            throw solver::InputError("--reference analytic: a run of scene '" + spec.scene +
-                                     "' with " + label +
+            throw solver::InputError(std::string("--reference analytic: a run of scene '") +
+                                     solver::enumWord(spec.scene) + "' with " + label +
                                      " reports no analytic or published value for " + metric.name +
                                      "; use --reference finest");
         study.metric.analytic = study.metric.analytic && metric.analytic;

@@ -18,7 +18,7 @@ using solver::SceneKind;
 /// to "final" beside the scene's metrics.
 std::vector<std::string> driverNumbers(const solver::CaseSpec& spec) {
     std::vector<std::string> names{"steps", "t_over_tc", "wall_s", "mlups", "t_s", "step"};
-    if (solver::sceneFromName(spec.scene) == SceneKind::ColumnCollapse)
+    if (spec.scene == SceneKind::ColumnCollapse)
         names.insert(names.end(),
                      {"runout_final", "packing_final", "ke_peak", "t_ke_peak_over_tc"});
     return names;
@@ -27,7 +27,7 @@ std::vector<std::string> driverNumbers(const solver::CaseSpec& spec) {
 } // namespace
 
 std::string defaultStudyMetric(const solver::CaseSpec& spec) {
-    switch (solver::sceneFromName(spec.scene)) {
+    switch (spec.scene) {
     case SceneKind::Poiseuille:
         return "l2_error";
     case SceneKind::TaylorGreen:
@@ -53,7 +53,8 @@ StudyMetric resolveStudyMetric(const solver::CaseSpec& spec, const std::string& 
         known.push_back(decl.name);
     }
     const std::string nearest = solver::nearestWord(bare, known);
-    throw solver::InputError("--metric " + name + ": a run of scene '" + spec.scene +
+    throw solver::InputError("--metric " + name + ": a run of scene '" +
+                             solver::enumWord(spec.scene) +
                              "' reports no such number in summary.json" +
                              (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
 }

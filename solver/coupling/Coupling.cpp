@@ -9,22 +9,6 @@
 
 namespace lbdem::solver::coupling {
 
-CouplingMethod couplingMethodFromName(const std::string& name) {
-    if (name == "bounce_back") return CouplingMethod::BounceBack;
-    if (name == "psm") return CouplingMethod::Psm;
-    throw std::invalid_argument("unknown coupling method '" + name + "'");
-}
-
-const char* couplingMethodName(CouplingMethod method) {
-    return method == CouplingMethod::BounceBack ? "bounce_back" : "psm";
-}
-
-PsmWeight psmWeightFromName(const std::string& name) {
-    if (name == "eps") return PsmWeight::Eps;
-    if (name == "nt") return PsmWeight::Nt;
-    throw std::invalid_argument("unknown psm weight '" + name + "'");
-}
-
 Coupling::Coupling(lattice::Lattice& lattice, dem::DemSystem& dem, const CouplingParams& params)
     : m_lattice(lattice), m_dem(dem), m_params(params) {
     if (!(params.h > 0) || !(params.dt > 0) || !(params.rho_f > 0))

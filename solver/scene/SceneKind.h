@@ -1,9 +1,9 @@
 // The scenes a case can ask for.
 #pragma once
 
-#include <string>
-#include <string_view>
-#include <vector>
+#include "solver/core/EnumWords.h"
+
+#include <array>
 
 namespace lbdem::solver {
 
@@ -17,11 +17,14 @@ enum class SceneKind {
     SettlingDisc,   ///< a single disc settling in a channel (verification)
 };
 
-/// The case-file word of every scene, in enum order.
-const std::vector<std::string>& sceneNames();
-/// The scene for a case-file word; the word must be one of sceneNames().
-SceneKind sceneFromName(std::string_view name);
-/// The case-file word of a scene.
-const std::string& sceneName(SceneKind kind);
+/// The case-file word of each scene (the top-level key scene).
+constexpr std::array<EnumWord<SceneKind>, 6> enumWords(SceneKind) {
+    return {{{SceneKind::ColumnCollapse, "column_collapse"},
+             {SceneKind::Poiseuille, "poiseuille"},
+             {SceneKind::TaylorGreen, "taylor_green"},
+             {SceneKind::Cavity, "cavity"},
+             {SceneKind::Cylinder, "cylinder"},
+             {SceneKind::SettlingDisc, "settling_disc"}}};
+}
 
 } // namespace lbdem::solver
