@@ -105,7 +105,7 @@ std::vector<VerificationResult> stabilityResults(const VerificationOptions& opti
         r.tolerance = 0;
         r.passed = failure.empty() && reached == spec.flow.steps;
         r.wall_s = since(start);
-        r.method = "mrt_les";
+        r.method = enumWord(spec.fluid.collision);
         r.source = failure.empty() ? "stability guard: NaN, rho <= 0 or Mach > 0.5 never seen"
                                    : "stopped: " + failure;
         out.push_back(r);
@@ -131,7 +131,7 @@ std::vector<VerificationResult> stabilityResults(const VerificationOptions& opti
         r.tolerance = 0;
         r.passed = diagnosed;
         r.wall_s = since(start);
-        r.method = "bgk";
+        r.method = enumWord(spec.fluid.collision);
         r.source = message.empty() ? "the guard did not stop the run" : "guard: " + message;
         out.push_back(r);
     }
