@@ -68,8 +68,8 @@ private:
     std::vector<ParamDecl> m_params;
 };
 
-// The ParamValue a field's value is read and written as: bool, long long (int fields), double,
-// a string (text), or the enum's word from its table (choices).
+/// The ParamValue a field's value is read and written as: bool, long long (int fields), double,
+/// a string (text), or the enum's word from its table (choices).
 inline ParamValue toParamValue(bool value) {
     return value;
 }
