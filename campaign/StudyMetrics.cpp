@@ -23,7 +23,7 @@ bool reported(const solver::CaseSpec& spec, const std::string& name) {
 } // namespace
 
 std::string defaultStudyMetric(const solver::CaseSpec& spec) {
-    const auto& decl = solver::sceneDecl(solver::sceneFromName(spec.scene));
+    const auto& decl = solver::sceneDecl(spec.scene);
     return decl.studyFallback.empty() || reported(spec, decl.studyMetric) ? decl.studyMetric
                                                                           : decl.studyFallback;
 }
@@ -40,7 +40,8 @@ StudyMetric resolveStudyMetric(const solver::CaseSpec& spec, const std::string& 
         known.push_back(decl.name);
     }
     const std::string nearest = solver::nearestWord(bare, known);
-    throw solver::InputError("--metric " + name + ": a run of scene '" + spec.scene +
+    throw solver::InputError("--metric " + name + ": a run of scene '" +
+                             solver::enumWord(spec.scene) +
                              "' reports no such number in summary.json" +
                              (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
 }

@@ -132,11 +132,12 @@ StudyPlan planStudy(const StudyRequest& request, const std::string& lbdem) {
         if (std::find(study.keys.begin(), study.keys.end(), "output.vtk") == study.keys.end())
             overrides.push_back("output.vtk=false");
         const solver::CaseSpec spec = io::loadCase(request.casePath, overrides);
-        const auto kind = solver::sceneFromName(spec.scene);
+        const auto kind = spec.scene;
         if (solver::sceneDecl(kind).studyMetric.empty())
             throw solver::InputError(
                 request.casePath, 0, "scene",
-                "'" + spec.scene + "' is run by `lbdem verify` only, so it cannot be studied");
+                std::string("'") + solver::enumWord(kind) +
+                    "' is run by `lbdem verify` only, so it cannot be studied");
         solver::makePlan(spec);
         const std::string metricName =
             request.metric.empty() ? defaultStudyMetric(spec) : request.metric;
@@ -155,8 +156,8 @@ StudyPlan planStudy(const StudyRequest& request, const std::string& lbdem) {
                                      "); choose one with --metric");
         }
         if (request.reference == "analytic" && !metric.analytic)
-            throw solver::InputError("--reference analytic: a run of scene '" + spec.scene +
-                                     "' with " + label +
+            throw solver::InputError(std::string("--reference analytic: a run of scene '") +
+                                     solver::enumWord(spec.scene) + "' with " + label +
                                      " reports no analytic or published value for " + metric.name +
                                      "; use --reference finest");
         study.metric.analytic = study.metric.analytic && metric.analytic;

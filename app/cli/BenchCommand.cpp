@@ -109,8 +109,8 @@ int runFluidBench(const BenchOptions& options) {
         for (auto model :
              {lat::CollisionModel::Bgk, lat::CollisionModel::Mrt, lat::CollisionModel::MrtLes}) {
             KernelResult r;
-            r.name = lat::collisionName(model);
-            r.precision = lat::storageName(storage);
+            r.name = solver::enumWord(model);
+            r.precision = solver::enumWord(storage);
             r.mlups = measureKernel(model, storage, nx, ny);
             r.bytesPerUpdate = bytesPerUpdate(storage);
             results.push_back(r);
@@ -153,7 +153,7 @@ int runFluidBench(const BenchOptions& options) {
 // Particle-steps per second on a settled pile with the paper's grains (docs/design.md §5b), for one
 // thread and for the requested (or all) threads.
 int runDemBench(const BenchOptions& options) {
-    const solver::CaseSpec defaults;
+    const solver::CaseSpec defaults = solver::defaultCase();
     solver::dem::DemBenchConfig config;
     config.pile.material = solver::grainMaterial(defaults.grains);
     config.pile.d_min = defaults.grains.d_min_m;

@@ -31,11 +31,8 @@ double median(std::vector<double> values) {
 }
 
 /// Bytes moved per node update by the in-place (AA) bulk kernel: nine values read, nine written.
-double bytesPerUpdate(const std::string& storage) {
-    return 2.0 * 9 *
-           (solver::lattice::storageFromName(storage) == solver::lattice::PopulationStorage::Float
-                ? 4
-                : 8);
+double bytesPerUpdate(solver::lattice::PopulationStorage storage) {
+    return 2.0 * 9 * (storage == solver::lattice::PopulationStorage::Float ? 4 : 8);
 }
 
 } // namespace
@@ -93,14 +90,14 @@ int runCaseBench(const CaseBenchOptions& options) {
                                     {"projected_end_s", projected},
                                     {"end_tc", plan.end_time_s / plan.tc_s},
                                     {"threads", threads},
-                                    {"storage", spec.fluid.storage}};
+                                    {"storage", solver::enumWord(spec.fluid.storage)}};
         std::cout << doc.dump(2) << "\n";
         return kExitOk;
     }
     std::printf(
         "%s: %lld steps (%.3g tau_c) of %d x %d nodes in %.2f s on %d threads, %s storage\n",
         spec.name.c_str(), steps, options.tc, plan.nx, plan.ny, wall, threads,
-        spec.fluid.storage.c_str());
+        solver::enumWord(spec.fluid.storage));
     const double staged = std::max(timer.total(), 1e-300);
     for (std::size_t k = 0; k < static_cast<std::size_t>(solver::Stage::Count); ++k) {
         const auto stage = static_cast<solver::Stage>(k);

@@ -17,7 +17,7 @@ void CaseOptions::addTo(CLI::App& command, bool caseRequired) {
 
 solver::CaseSpec CaseOptions::load() const {
     if (path.empty()) {
-        solver::CaseSpec spec;
+        solver::CaseSpec spec = solver::defaultCase();
         for (const auto& assignment : overrides)
             io::applyOverride(spec, assignment);
         return spec;

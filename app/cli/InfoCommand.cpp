@@ -33,7 +33,7 @@ void runInfo(const InfoOptions& options) {
         std::cout << io::planToJson(plan).dump(2) << "\n";
         return;
     }
-    std::cout << "Case '" << spec.name << "' (scene " << spec.scene << ")\n"
+    std::cout << "Case '" << spec.name << "' (scene " << solver::enumWord(spec.scene) << ")\n"
               << io::formatPlan(plan);
     // Would it fit here? (lbdem run refuses what does not, unless --force.)
     for (const auto& problem : campaign::resourceProblems(plan, "results/" + spec.name))

@@ -39,7 +39,8 @@ std::string sceneDefaultMetrics() {
     std::string text;
     for (const auto& decl : solver::sceneDecls())
         if (!decl.studyMetric.empty())
-            text += (text.empty() ? "" : ", ") + decl.name + " " + decl.studyMetric;
+            text += std::string(text.empty() ? "" : ", ") + solver::enumWord(decl.kind) + " " +
+                    decl.studyMetric;
     return text;
 }
 

@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     for (const QString& assignment : parser.values(set))
         overrides.push_back(assignment.toStdString());
     const QString path = parser.positionalArguments().value(0);
-    lbdem::solver::CaseSpec spec;
+    lbdem::solver::CaseSpec spec = lbdem::solver::defaultCase();
     try {
         if (!path.isEmpty()) spec = lbdem::io::loadCase(path.toStdString(), overrides);
     } catch (const std::exception& error) {

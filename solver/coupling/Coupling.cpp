@@ -30,22 +30,6 @@ void clipRange(Real lo, Real hi, Real min, Real max, Real period, int& i0, int& 
 
 } // namespace
 
-CouplingMethod couplingMethodFromName(const std::string& name) {
-    if (name == "bounce_back") return CouplingMethod::BounceBack;
-    if (name == "psm") return CouplingMethod::Psm;
-    throw std::invalid_argument("unknown coupling method '" + name + "'");
-}
-
-const char* couplingMethodName(CouplingMethod method) {
-    return method == CouplingMethod::BounceBack ? "bounce_back" : "psm";
-}
-
-PsmWeight psmWeightFromName(const std::string& name) {
-    if (name == "eps") return PsmWeight::Eps;
-    if (name == "nt") return PsmWeight::Nt;
-    throw std::invalid_argument("unknown psm weight '" + name + "'");
-}
-
 std::unique_ptr<Coupling> makeCoupling(lattice::Lattice& lattice, dem::DemSystem& dem,
                                        const CouplingParams& params) {
     if (params.method == CouplingMethod::Psm)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "solver/core/Real.h"
+#include "solver/coupling/CouplingMethod.h"
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
 
@@ -13,25 +14,6 @@
 #include <vector>
 
 namespace lbdem::solver::coupling {
-
-/// How the fluid sees the grains (docs/design.md §5 Coupling).
-enum class CouplingMethod {
-    BounceBack, ///< moving solid nodes, Bouzidi moving-wall links, momentum exchange (default)
-    Psm,        ///< partially saturated cells (Noble & Torczynski 1998)
-};
-
-/// Weight B(eps) of the partially saturated method.
-enum class PsmWeight {
-    Eps, ///< B = eps
-    Nt,  ///< B = eps (tau - 1/2) / ((1 - eps) + (tau - 1/2)); goes to 0 as tau -> 1/2
-};
-
-/// Parse "bounce_back" / "psm" (case-file words); throws std::invalid_argument otherwise.
-CouplingMethod couplingMethodFromName(const std::string& name);
-/// The case-file word of a method.
-const char* couplingMethodName(CouplingMethod method);
-/// Parse "eps" / "nt"; throws std::invalid_argument otherwise.
-PsmWeight psmWeightFromName(const std::string& name);
 
 /// Parameters of the coupling. The lattice works in lattice units (h = dt = rho_f = 1); the DEM
 /// in SI per unit thickness. Lattice position x_lat = (x - origin_x) / h, i.e. the lattice's

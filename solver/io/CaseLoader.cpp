@@ -14,6 +14,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <utility>
 
 namespace lbdem::io {
 
@@ -29,23 +30,15 @@ namespace {
 /// Where each key was set, so that cross-key problems can name a line.
 using KeyLines = std::map<std::string, int>;
 
+/// How a message names the kind of a TOML value.
 std::string describeNode(const toml::node& node) {
-    switch (node.type()) {
-    case toml::node_type::table:
-        return "a table";
-    case toml::node_type::array:
-        return "an array";
-    case toml::node_type::string:
-        return "a string";
-    case toml::node_type::integer:
-        return "a whole number";
-    case toml::node_type::floating_point:
-        return "a number";
-    case toml::node_type::boolean:
-        return "a boolean";
-    default:
-        return "a date or time";
-    }
+    static constexpr std::pair<toml::node_type, const char*> kKinds[] = {
+        {toml::node_type::table, "a table"},           {toml::node_type::array, "an array"},
+        {toml::node_type::string, "a string"},         {toml::node_type::integer, "a whole number"},
+        {toml::node_type::floating_point, "a number"}, {toml::node_type::boolean, "a boolean"}};
+    for (const auto& [type, words] : kKinds)
+        if (node.type() == type) return words;
+    return "a date or time";
 }
 
 std::optional<ParamValue> nodeValue(const toml::node& node) {
@@ -156,7 +149,7 @@ CaseSpec parseWithOverrides(const std::string& text, const std::string& source,
         throw InputError(source, static_cast<int>(error.source().begin.line), "",
                          "is not valid TOML: " + std::string(error.description()));
     }
-    CaseSpec spec;
+    CaseSpec spec = solver::defaultCase();
     KeyLines lines;
     applyTable(spec, root, source, lines);
     for (const auto& assignment : overrides) {

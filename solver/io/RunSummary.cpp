@@ -17,7 +17,7 @@ nlohmann::json runSummary(const solver::Simulation& simulation, bool finished,
     nlohmann::json summary{
         {"case", simulation.spec().name},
         {"finished", finished},
-        {"scene", simulation.spec().scene},
+        {"scene", solver::enumWord(simulation.spec().scene)},
         {"plan",
          {{"h", plan.h_m},
           {"dt", plan.dt_s},
@@ -61,7 +61,7 @@ void writeRunSummary(const std::filesystem::path& dir, const solver::Simulation&
 
 std::vector<std::string> runSummaryNumbers(const solver::CaseSpec& spec) {
     std::vector<std::string> names{"steps", "t_over_tc", "wall_s", "mlups", "t_s", "step"};
-    if (solver::sceneFromName(spec.scene) == solver::SceneKind::ColumnCollapse)
+    if (spec.scene == solver::SceneKind::ColumnCollapse)
         names.insert(names.end(),
                      {"runout_final", "packing_final", "ke_peak", "t_ke_peak_over_tc"});
     return names;

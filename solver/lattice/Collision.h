@@ -1,10 +1,11 @@
 // Collision operators (BGK, MRT, MRT + Smagorinsky LES) with Guo forcing, one node at a time.
 #pragma once
 
+#include "solver/core/EnumWords.h"
 #include "solver/core/Real.h"
 
+#include <array>
 #include <cmath>
-#include <string>
 
 /// Collision operators are inlined into the vectorised node loop whatever their size: a call
 /// in the loop body stops vectorisation (measured: MRT + LES ran scalar).
@@ -15,10 +16,12 @@ namespace lbdem::solver::lattice {
 /// The collision models of docs/design.md §5.
 enum class CollisionModel { Bgk, Mrt, MrtLes };
 
-/// Parse "bgk" / "mrt" / "mrt_les" (the case-file words); throws std::invalid_argument otherwise.
-CollisionModel collisionFromName(const std::string& name);
-/// The case-file word of a collision model.
-const char* collisionName(CollisionModel model);
+/// The case-file word of each collision model (fluid.collision).
+constexpr std::array<EnumWord<CollisionModel>, 3> enumWords(CollisionModel) {
+    return {{{CollisionModel::Bgk, "bgk"},
+             {CollisionModel::Mrt, "mrt"},
+             {CollisionModel::MrtLes, "mrt_les"}}};
+}
 
 /// Relaxation parameters of every model, in lattice units.
 struct CollisionParams {

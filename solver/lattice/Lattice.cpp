@@ -4,7 +4,6 @@
 #include "solver/core/InputError.h"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 namespace lbdem::solver::lattice {
@@ -35,35 +34,6 @@ int directionOf(int cx, int cy) {
 }
 
 } // namespace
-
-CollisionModel collisionFromName(const std::string& name) {
-    if (name == "bgk") return CollisionModel::Bgk;
-    if (name == "mrt") return CollisionModel::Mrt;
-    if (name == "mrt_les") return CollisionModel::MrtLes;
-    throw std::invalid_argument("unknown collision model '" + name + "'");
-}
-
-const char* collisionName(CollisionModel model) {
-    switch (model) {
-    case CollisionModel::Bgk:
-        return "bgk";
-    case CollisionModel::Mrt:
-        return "mrt";
-    case CollisionModel::MrtLes:
-        return "mrt_les";
-    }
-    return "?";
-}
-
-PopulationStorage storageFromName(const std::string& name) {
-    if (name == "double") return PopulationStorage::Double;
-    if (name == "float") return PopulationStorage::Float;
-    throw std::invalid_argument("unknown population storage '" + name + "'");
-}
-
-const char* storageName(PopulationStorage storage) {
-    return storage == PopulationStorage::Float ? "float" : "double";
-}
 
 Lattice::Lattice(const LatticeSetup& setup) : m_setup(setup) {
     const auto& s = m_setup;

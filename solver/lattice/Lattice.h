@@ -6,6 +6,7 @@
 #include "solver/lattice/Collision.h"
 #include "solver/lattice/D2Q9.h"
 #include "solver/lattice/PopulationStorage.h"
+#include "solver/lattice/SideType.h"
 
 #include <cstdint>
 #include <functional>
@@ -13,16 +14,6 @@
 #include <vector>
 
 namespace lbdem::solver::lattice {
-
-/// Boundary condition on one side of the rectangular domain.
-enum class SideType {
-    Periodic,      ///< wraps to the opposite side (both sides must say so)
-    Wall,          ///< half-way bounce-back, optionally moving with (ux, uy)
-    FreeSlip,      ///< specular reflection: zero normal flux, no tangential stress
-    Pressure,      ///< constant-pressure open boundary (anti-bounce-back at density rho)
-    ZouHeVelocity, ///< Zou & He (1997) velocity boundary on the outermost fluid column
-    ZouHePressure, ///< Zou & He (1997) pressure boundary on the outermost fluid column
-};
 
 /// One side's condition; Zou–He sides exist on the left and right only.
 struct SideCondition {

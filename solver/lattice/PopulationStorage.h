@@ -3,7 +3,7 @@
 
 #include "solver/lattice/Collision.h"
 
-#include <string>
+#include <array>
 
 namespace lbdem::solver::lattice {
 
@@ -14,10 +14,10 @@ enum class PopulationStorage {
     Float,  ///< f_i - w_i as float (DDF shifting): 4 bytes per value, 72 bytes per update
 };
 
-/// Parse "double" / "float" (the case-file words); throws std::invalid_argument otherwise.
-PopulationStorage storageFromName(const std::string& name);
-/// The case-file word of a population storage.
-const char* storageName(PopulationStorage storage);
+/// The case-file word of each population storage (fluid.storage).
+constexpr std::array<EnumWord<PopulationStorage>, 2> enumWords(PopulationStorage) {
+    return {{{PopulationStorage::Double, "double"}, {PopulationStorage::Float, "float"}}};
+}
 
 /// Conversion between a stored number of type S and the population f_i of a direction of
 /// weight w_i. Float stores the deviation from the rest equilibrium, f_i - w_i (rho = 1,

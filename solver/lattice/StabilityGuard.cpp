@@ -49,7 +49,7 @@ void StabilityGuard::check(const Lattice& lattice) const {
         std::snprintf(text, sizeof text,
                       "tau - 0.5 = %.3g is too close to 0.5 for collision '%s' without LES; use "
                       "collision = \"mrt_les\" or raise tau",
-                      p.tau - 0.5, collisionName(p.model));
+                      p.tau - 0.5, enumWord(p.model));
         cause = text;
     } else {
         cause = "the velocity is too high for the lattice; lower the flow velocity (Mach number) "

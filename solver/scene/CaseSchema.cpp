@@ -10,19 +10,10 @@
 namespace lbdem::solver {
 
 std::string_view describeType(ParamType type) {
-    switch (type) {
-    case ParamType::Bool:
-        return "true or false";
-    case ParamType::Integer:
-        return "a whole number";
-    case ParamType::Real:
-        return "a number";
-    case ParamType::Text:
-        return "a quoted string";
-    case ParamType::Choice:
-        return "a quoted word";
-    }
-    return "a value";
+    // In ParamType's order.
+    static constexpr std::string_view kWords[] = {"true or false", "a whole number", "a number",
+                                                  "a quoted string", "a quoted word"};
+    return kWords[static_cast<int>(type)];
 }
 
 namespace {
@@ -38,21 +29,6 @@ std::string describeValueKind(const ParamValue& value) {
     if (std::holds_alternative<long long>(value)) return "a whole number";
     if (std::holds_alternative<double>(value)) return "a number";
     return "a string";
-}
-
-ParamDecl makeDecl(const std::string& section, const std::string& key, ParamType type,
-                   const std::string& unit, const std::string& doc,
-                   double min = -std::numeric_limits<double>::infinity(),
-                   double max = std::numeric_limits<double>::infinity()) {
-    ParamDecl decl;
-    decl.section = section;
-    decl.key = key;
-    decl.type = type;
-    decl.unit = unit;
-    decl.doc = doc;
-    decl.min = min;
-    decl.max = max;
-    return decl;
 }
 
 } // namespace
@@ -146,65 +122,14 @@ std::vector<std::string> CaseSchema::paths() const {
     return result;
 }
 
-void CaseSchema::addBool(const std::string& section, const std::string& key, const std::string& doc,
-                         std::function<bool&(CaseSpec&)> field) {
-    ParamDecl decl = makeDecl(section, key, ParamType::Bool, "-", doc);
-    decl.get = [field](const CaseSpec& spec) {
-        return ParamValue{field(const_cast<CaseSpec&>(spec))};
-    };
-    decl.set = [field](CaseSpec& spec, const ParamValue& value) {
-        field(spec) = std::get<bool>(value);
-    };
-    m_params.push_back(std::move(decl));
-}
-
-void CaseSchema::addInteger(const std::string& section, const std::string& key,
-                            const std::string& unit, double min, double max, const std::string& doc,
-                            std::function<int&(CaseSpec&)> field) {
-    ParamDecl decl = makeDecl(section, key, ParamType::Integer, unit, doc, min, max);
-    decl.get = [field](const CaseSpec& spec) {
-        return ParamValue{static_cast<long long>(field(const_cast<CaseSpec&>(spec)))};
-    };
-    decl.set = [field](CaseSpec& spec, const ParamValue& value) {
-        field(spec) = static_cast<int>(std::get<long long>(value));
-    };
-    m_params.push_back(std::move(decl));
-}
-
-void CaseSchema::addReal(const std::string& section, const std::string& key,
-                         const std::string& unit, double min, double max, const std::string& doc,
-                         std::function<double&(CaseSpec&)> field) {
-    ParamDecl decl = makeDecl(section, key, ParamType::Real, unit, doc, min, max);
-    decl.get = [field](const CaseSpec& spec) {
-        return ParamValue{field(const_cast<CaseSpec&>(spec))};
-    };
-    decl.set = [field](CaseSpec& spec, const ParamValue& value) {
-        if (const auto* i = std::get_if<long long>(&value))
-            field(spec) = static_cast<double>(*i);
-        else
-            field(spec) = std::get<double>(value);
-    };
-    m_params.push_back(std::move(decl));
-}
-
-void CaseSchema::addText(const std::string& section, const std::string& key, const std::string& doc,
-                         std::function<std::string&(CaseSpec&)> field) {
-    ParamDecl decl = makeDecl(section, key, ParamType::Text, "-", doc);
-    decl.get = [field](const CaseSpec& spec) {
-        return ParamValue{field(const_cast<CaseSpec&>(spec))};
-    };
-    decl.set = [field](CaseSpec& spec, const ParamValue& value) {
-        field(spec) = std::get<std::string>(value);
-    };
-    m_params.push_back(std::move(decl));
-}
-
-void CaseSchema::addChoice(const std::string& section, const std::string& key,
-                           std::vector<std::string> choices, const std::string& doc,
-                           std::function<std::string&(CaseSpec&)> field) {
-    addText(section, key, doc, std::move(field));
-    m_params.back().type = ParamType::Choice;
-    m_params.back().choices = std::move(choices);
+CaseSpec defaultCase() {
+    static const CaseSpec defaults = [] {
+        CaseSpec spec;
+        for (const auto& param : CaseSchema::instance().params())
+            param.set(spec, param.default_value);
+        return spec;
+    }();
+    return defaults;
 }
 
 std::string formatTomlValue(const ParamValue& value) {

@@ -32,7 +32,7 @@ std::vector<CaseProblem> validateCase(const CaseSpec& spec) {
     std::vector<CaseProblem> problems;
     if (const std::string problem = nameProblem(spec.name); !problem.empty())
         problems.push_back({"name", problem});
-    if (spec.scene == sceneName(SceneKind::ColumnCollapse)) {
+    if (spec.scene == SceneKind::ColumnCollapse) {
         if (spec.grains.count < 1)
             problems.push_back(
                 {"grains.count", "must be at least 1: a column collapse needs grains"});

@@ -34,22 +34,15 @@ constexpr int kProbePoints = 64;
 /// The far field of the acoustic-noise measure starts this many column widths from the column.
 constexpr double kFarFieldWidths = 2.0;
 
-lattice::SideType sideOf(const std::string& word) {
-    if (word == "wall") return lattice::SideType::Wall;
-    if (word == "free_slip") return lattice::SideType::FreeSlip;
-    if (word == "periodic") return lattice::SideType::Periodic;
-    return lattice::SideType::Pressure;
-}
-
 lattice::LatticeSetup columnLatticeSetup(const CaseSpec& spec, const Plan& plan) {
     lattice::LatticeSetup setup;
     setup.nx = plan.nx;
     setup.ny = plan.ny;
     setup.collision = collisionOf(spec, plan.tau);
-    setup.storage = lattice::storageFromName(spec.fluid.storage);
+    setup.storage = spec.fluid.storage;
     setup.left.type = setup.bottom.type = lattice::SideType::Wall; // no-slip floor and back wall
-    setup.top.type = sideOf(spec.domain.top);
-    setup.right.type = sideOf(spec.domain.right);
+    setup.top.type = spec.domain.top;
+    setup.right.type = spec.domain.right;
     if (setup.right.type == lattice::SideType::Periodic)
         setup.left.type = lattice::SideType::Periodic;
     return setup;
@@ -65,8 +58,8 @@ lattice::AbsorbingLayerSetup absorbingLayerSetup(const CaseSpec& spec) {
 
 coupling::CouplingParams couplingParams(const CaseSpec& spec, const Plan& plan) {
     coupling::CouplingParams p;
-    p.method = coupling::couplingMethodFromName(spec.coupling.method);
-    p.psm_weight = coupling::psmWeightFromName(spec.coupling.psm_weight);
+    p.method = spec.coupling.method;
+    p.psm_weight = spec.coupling.psm_weight;
     p.hydro_radius_ratio = spec.coupling.hydro_radius_ratio;
     p.h = plan.h_m;
     p.dt = plan.dt_s;

@@ -3,10 +3,10 @@
 #include "solver/core/Constants.h"
 
 #include "solver/core/InputError.h"
+#include "solver/scene/FluidStability.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace lbdem::solver {
 
@@ -42,32 +42,26 @@ bool isFlowScene(SceneKind kind) {
 }
 
 FlowScales flowScales(const CaseSpec& spec) {
-    const SceneKind kind = sceneFromName(spec.scene);
+    const SceneKind kind = spec.scene;
     const FlowSpec& f = spec.flow;
     FlowScales s;
     const bool cylinder = kind == SceneKind::Cylinder;
     s.length_m = cylinder ? spec.domain.height_m / kCylinderHeightOverD : spec.domain.height_m;
     s.h_m = s.length_m / f.nodes;
     const double refOverPeak = cylinder ? kMeanOverPeakInflow : 1.0;
-    if (f.tau > 0.5 && f.reynolds > 0) { // diffusive scaling: tau fixed, velocity from Re
-        s.tau = f.tau;
-        s.nu_lattice = (f.tau - 0.5) / 3.0;
+    const bool imposed = imposesTau(f.tau);
+    if (!imposed && !(f.reynolds > 0))
+        throw InputError("", 0, "flow.reynolds",
+                         "0 derives the Reynolds number from flow.tau and "
+                         "flow.lattice_velocity, so it needs flow.tau above 0.5");
+    s.u_peak = f.lattice_velocity;
+    s.u_ref = s.u_peak * refOverPeak;
+    // Lattice viscosity: from an imposed tau, else from the velocity and Re (lattice units).
+    s.nu_lattice = imposed ? (f.tau - 0.5) / 3.0 : s.u_ref * f.nodes / f.reynolds;
+    s.tau = relaxationTime(f.tau, s.nu_lattice, 1.0, 1.0);
+    if (imposed && f.reynolds > 0) { // diffusive scaling: tau fixed, velocity from Re
         s.u_ref = f.reynolds * s.nu_lattice / f.nodes;
         s.u_peak = s.u_ref / refOverPeak;
-    } else if (f.tau > 0.5) { // reynolds = 0: tau and velocity (Mach) imposed, Re follows
-        s.tau = f.tau;
-        s.nu_lattice = (f.tau - 0.5) / 3.0;
-        s.u_peak = f.lattice_velocity;
-        s.u_ref = s.u_peak * refOverPeak;
-    } else {
-        if (!(f.reynolds > 0))
-            throw InputError("", 0, "flow.reynolds",
-                             "0 derives the Reynolds number from flow.tau and "
-                             "flow.lattice_velocity, so it needs flow.tau above 0.5");
-        s.u_peak = f.lattice_velocity;
-        s.u_ref = s.u_peak * refOverPeak;
-        s.nu_lattice = s.u_ref * f.nodes / f.reynolds;
-        s.tau = 0.5 + 3.0 * s.nu_lattice;
     }
     // dt from the physical viscosity: nu = nu_lattice h^2 / dt.
     s.dt_s = s.nu_lattice * s.h_m * s.h_m / spec.fluid.viscosity_m2_s;
@@ -95,21 +89,7 @@ void planFlow(const CaseSpec& spec, Plan& plan) {
     plan.steps = s.steps;
     plan.end_time_s = static_cast<double>(s.steps) * s.dt_s;
     plan.tc_s = s.length_m / std::max(s.u_ref * s.h_m / s.dt_s, 1e-300); // L / U
-    char text[256];
-    if (s.tau - 0.5 < 0.01 && spec.fluid.collision != "mrt_les") {
-        std::snprintf(text, sizeof text,
-                      "tau - 0.5 = %.3g is below 0.01 without LES: the run is likely unstable; "
-                      "use collision = \"mrt_les\"",
-                      s.tau - 0.5);
-        plan.warnings.push_back(text);
-    }
-    if (plan.mach > 0.3) {
-        std::snprintf(text, sizeof text,
-                      "peak lattice Mach number %.3g is above 0.3: lower flow.lattice_velocity or "
-                      "raise flow.nodes",
-                      plan.mach);
-        plan.warnings.push_back(text);
-    }
+    addStabilityWarnings(spec, plan);
 }
 
 } // namespace lbdem::solver

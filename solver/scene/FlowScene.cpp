@@ -20,7 +20,7 @@ lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const Flow
     setup.nx = s.nx;
     setup.ny = s.ny;
     setup.collision = collisionOf(spec, s.tau);
-    setup.storage = lattice::storageFromName(spec.fluid.storage);
+    setup.storage = spec.fluid.storage;
     switch (kind) {
     case SceneKind::Poiseuille: {
         // Body-force channel: F = 8 nu U / H^2 gives centreline velocity U between walls H apart.
@@ -49,7 +49,7 @@ lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const Flow
         break;
     }
     default:
-        throw InputError("scene '" + spec.scene + "' is not a flow scene");
+        throw InputError(std::string("scene '") + enumWord(spec.scene) + "' is not a flow scene");
     }
     return setup;
 }
@@ -57,7 +57,7 @@ lattice::LatticeSetup flowSetup(const CaseSpec& spec, SceneKind kind, const Flow
 } // namespace
 
 FlowScene::FlowScene(const CaseSpec& spec, const Plan& plan)
-    : m_spec(spec), m_kind(sceneFromName(spec.scene)), m_scales(flowScales(spec)),
+    : m_spec(spec), m_kind(spec.scene), m_scales(flowScales(spec)),
       m_lattice(flowSetup(spec, m_kind, m_scales)),
       m_guard(plan.h_m > 0 ? plan.h_m : m_scales.h_m) {
     const FlowScales& s = m_scales;

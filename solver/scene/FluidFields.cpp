@@ -7,7 +7,7 @@ namespace lbdem::solver {
 
 lattice::CollisionParams collisionOf(const CaseSpec& spec, double tau) {
     lattice::CollisionParams p;
-    p.model = lattice::collisionFromName(spec.fluid.collision);
+    p.model = spec.fluid.collision;
     p.tau = tau;
     p.s_e = spec.fluid.s_e;
     p.s_eps = spec.fluid.s_eps;

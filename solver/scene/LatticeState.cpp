@@ -38,11 +38,12 @@ void restoreLatticeState(const StateArchive& archive, lattice::Lattice& lattice)
     const long long saved =
         archive.integers.count("lattice/storage") ? archive.integer("lattice/storage").at(0) : 0;
     if (saved != storageCode(lattice.storage())) {
-        const char* savedName = saved == 1 ? "float" : "double";
+        const char* savedName = enumWord(saved == 1 ? lattice::PopulationStorage::Float
+                                                    : lattice::PopulationStorage::Double);
         throw InputError(std::string("the checkpoint holds fluid populations stored as ") +
                          savedName + " but the case sets fluid.storage = \"" +
-                         lattice::storageName(lattice.storage()) +
-                         "\"; resume with fluid.storage = \"" + savedName + "\"");
+                         enumWord(lattice.storage()) + "\"; resume with fluid.storage = \"" +
+                         savedName + "\"");
     }
     const auto& values = archive.real("lattice/f");
     if (values.size() != static_cast<std::size_t>(lattice::kQ * lattice.cells()))

@@ -5,6 +5,7 @@
 #include "solver/core/InputError.h"
 #include "solver/dem/ContactLaw.h"
 #include "solver/scene/FlowPlan.h"
+#include "solver/scene/FluidStability.h"
 #include "solver/scene/SceneKind.h"
 
 #include <algorithm>
@@ -131,14 +132,11 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
     const double reducedGravity =
         spec.domain.gravity_m_s2 * (1.0 - f.density_kg_m3 / spec.grains.density_kg_m3);
     plan.u_expected_m_s = std::sqrt(std::max(reducedGravity, 0.0) * plan.column.height_m);
-    if (f.tau > 0.5) {
-        plan.tau = f.tau;
-        plan.dt_s = (f.tau - 0.5) * plan.h_m * plan.h_m / (3.0 * f.viscosity_m2_s);
-    } else {
-        const double uLattice = f.target_mach * kSoundSpeed;
-        plan.dt_s = uLattice * plan.h_m / std::max(plan.u_expected_m_s, 1e-12);
-        plan.tau = 0.5 + 3.0 * f.viscosity_m2_s * plan.dt_s / (plan.h_m * plan.h_m);
-    }
+    // An imposed tau sets the step through the viscosity; else the Mach number sets it.
+    plan.dt_s = imposesTau(f.tau)
+                    ? (f.tau - 0.5) * plan.h_m * plan.h_m / (3.0 * f.viscosity_m2_s)
+                    : f.target_mach * kSoundSpeed * plan.h_m / std::max(plan.u_expected_m_s, 1e-12);
+    plan.tau = relaxationTime(f.tau, f.viscosity_m2_s, plan.dt_s, plan.h_m);
     plan.nu_lattice = (plan.tau - 0.5) / 3.0;
     plan.mach = plan.u_expected_m_s * plan.dt_s / plan.h_m / kSoundSpeed;
     const double needed = std::floor(plan.dt_s / plan.dem_dt_safe_s) + 1;
@@ -153,19 +151,7 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
                                                : static_cast<int>(std::min(needed, kMaxSubsteps));
     if (plan.has_grains) checkDemStep(spec, plan);
 
-    if (f.tau != 0 && f.tau <= 0.5)
-        plan.warnings.push_back(
-            format("tau = %.6g must exceed 0.5; set fluid.tau above 0.5 or to 0", f.tau));
-    if (plan.tau - 0.5 < 0.01 && f.collision != "mrt_les")
-        plan.warnings.push_back(
-            format("tau - 0.5 = %.3g is below 0.01 without LES: the run is likely "
-                   "unstable; use collision = \"mrt_les\"",
-                   plan.tau - 0.5));
-    if (plan.mach > 0.3)
-        plan.warnings.push_back(
-            format("expected Mach number %.3g is above 0.3: compressibility errors "
-                   "and instability; lower tau or raise resolution",
-                   plan.mach));
+    addStabilityWarnings(spec, plan);
     const double nodesAcross = spec.coupling.hydro_radius_ratio * f.resolution;
     if (plan.has_grains && nodesAcross < 5)
         plan.warnings.push_back(format("only %.3g lattice nodes across the smallest hydrodynamic "
@@ -177,11 +163,13 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
 /// domain or the layer: said in a note, with a warning when a submerged front may run further.
 void planDomain(const CaseSpec& spec, Plan& plan) {
     const auto& d = spec.domain;
-    if (plan.has_fluid && (d.right == "pressure" || d.top == "pressure") &&
+    if (plan.has_fluid &&
+        (d.right == lattice::SideType::Pressure || d.top == lattice::SideType::Pressure) &&
         d.absorbing_layer_strength > 0)
         plan.absorbing_layer_nodes = d.absorbing_layer_nodes;
     if (!plan.has_grains || plan.column.width_m <= 0) return;
-    const double layer = d.right == "pressure" ? plan.absorbing_layer_nodes * plan.h_m : 0.0;
+    const double layer =
+        d.right == lattice::SideType::Pressure ? plan.absorbing_layer_nodes * plan.h_m : 0.0;
     const double end = d.width_m - layer, widths = d.width_m / plan.column.width_m;
     plan.runout_room = (end - plan.column.width_m) / plan.column.width_m;
     const char* meets = layer > 0 ? "the absorbing layer" : "the end of the domain";
@@ -235,7 +223,7 @@ Plan makePlan(const CaseSpec& spec) {
     Plan plan;
     planGrains(spec, plan);
     plan.tc_s = std::sqrt(plan.column.height_m / std::max(spec.domain.gravity_m_s2, 1e-12));
-    const bool flow = spec.fluid.enabled && isFlowScene(sceneFromName(spec.scene));
+    const bool flow = spec.fluid.enabled && isFlowScene(spec.scene);
     if (flow) {
         planFlow(spec, plan); // sets its own steps and end time (solver/scene/FlowPlan.cpp)
     } else if (spec.fluid.enabled) {
@@ -251,7 +239,8 @@ Plan makePlan(const CaseSpec& spec) {
     }
 
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
-    const double bytesPerValue = spec.fluid.storage == "float" ? sizeof(float) : sizeof(double);
+    const double bytesPerValue =
+        spec.fluid.storage == lattice::PopulationStorage::Float ? sizeof(float) : sizeof(double);
     // One distribution set (updated in place), one flag byte, a side index and one solid
     // fraction per node, the coupling's owner map, ~256 B per grain; while a checkpoint is
     // written, a double copy of the state; while an output is written, the snapshot's and the

@@ -1,8 +1,10 @@
 // The scenes a case can ask for, and what each declares about itself.
 #pragma once
 
+#include "solver/core/EnumWords.h"
+
+#include <array>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace lbdem::solver {
@@ -17,11 +19,20 @@ enum class SceneKind {
     SettlingDisc,   ///< a single disc settling in a channel (verification)
 };
 
-/// What a scene declares about itself: its case-file word, the number of summary.json a study of
-/// it compares when none is named, and the key that sets its lattice resolution.
+/// The case-file word of each scene (the top-level key scene).
+constexpr std::array<EnumWord<SceneKind>, 6> enumWords(SceneKind) {
+    return {{{SceneKind::ColumnCollapse, "column_collapse"},
+             {SceneKind::Poiseuille, "poiseuille"},
+             {SceneKind::TaylorGreen, "taylor_green"},
+             {SceneKind::Cavity, "cavity"},
+             {SceneKind::Cylinder, "cylinder"},
+             {SceneKind::SettlingDisc, "settling_disc"}}};
+}
+
+/// What a scene declares about itself: the number of summary.json a study of it compares when
+/// none is named, and the key that sets its lattice resolution.
 struct SceneDecl {
     SceneKind kind;
-    std::string name;          ///< the case-file word
     std::string studyMetric;   ///< a study's default metric; empty: the scene cannot be studied
     std::string studyFallback; ///< the default instead when a case does not report studyMetric
                                ///< (the cavity away from Ghia's Re = 100); empty: none
@@ -33,12 +44,5 @@ struct SceneDecl {
 const std::vector<SceneDecl>& sceneDecls();
 /// The declaration of a scene.
 const SceneDecl& sceneDecl(SceneKind kind);
-
-/// The case-file word of every scene, in enum order.
-const std::vector<std::string>& sceneNames();
-/// The scene for a case-file word; the word must be one of sceneNames().
-SceneKind sceneFromName(std::string_view name);
-/// The case-file word of a scene.
-const std::string& sceneName(SceneKind kind);
 
 } // namespace lbdem::solver

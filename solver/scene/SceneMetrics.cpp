@@ -55,7 +55,7 @@ std::vector<MetricDecl> columnMetrics(const CaseSpec& spec) {
 } // namespace
 
 std::vector<MetricDecl> sceneMetrics(const CaseSpec& spec) {
-    const SceneKind kind = sceneFromName(spec.scene);
+    const SceneKind kind = spec.scene;
     if (kind == SceneKind::ColumnCollapse) return columnMetrics(spec);
     if (kind == SceneKind::SettlingDisc) return {};
     return flowMetrics(spec, kind);

@@ -10,16 +10,18 @@
 namespace lbdem::solver {
 
 std::unique_ptr<SceneRunner> makeSceneRunner(const CaseSpec& spec, const Plan& plan) {
-    const SceneKind kind = sceneFromName(spec.scene);
+    const SceneKind kind = spec.scene;
     if (isFlowScene(kind)) {
         if (!spec.fluid.enabled)
             throw InputError("", 0, "fluid.enabled",
-                             "scene '" + spec.scene + "' is a flow: it needs fluid.enabled = true");
+                             std::string("scene '") + enumWord(kind) +
+                                 "' is a flow: it needs fluid.enabled = true");
         return makeFlowSceneRunner(spec, plan);
     }
     if (kind == SceneKind::ColumnCollapse) return makeColumnCollapseRunner(spec, plan);
     throw InputError("", 0, "scene",
-                     "'" + spec.scene + "' is run by `lbdem verify` only, not by `lbdem run`");
+                     std::string("'") + enumWord(kind) +
+                         "' is run by `lbdem verify` only, not by `lbdem run`");
 }
 
 } // namespace lbdem::solver

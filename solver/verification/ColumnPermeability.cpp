@@ -251,8 +251,8 @@ ColumnPermeabilityPoint columnPermeability(const CaseSpec& spec, const dem::Pack
     const WindowFlowResult r = measureWindowPermeability(s);
     ColumnPermeabilityPoint p;
     p.packing = packingName;
-    p.method = coupling::couplingMethodName(method);
-    p.collision = lattice::collisionName(collision.model);
+    p.method = enumWord(method);
+    p.collision = enumWord(collision.model);
     p.s_q = collision.s_q;
     p.resolution = resolution;
     p.nx = s.nx;

@@ -43,7 +43,7 @@ VerificationResult record(const Series& s, std::string quantity, double value, d
     r.error = error;
     r.tolerance = tolerance;
     r.passed = passed;
-    r.method = coupling::couplingMethodName(s.method);
+    r.method = enumWord(s.method);
     r.source = kSource;
     for (const auto& p : s.points)
         r.wall_s += p.wall_s;
@@ -126,7 +126,8 @@ std::vector<VerificationResult> columnPermeabilityRun(const VerificationOptions&
     std::vector<CaseSpec> specs;
     std::vector<dem::Packing> packings;
     for (const auto& [name, fraction] : columns) {
-        specs.emplace_back(); // the defaults are the paper's submerged column (tau 0.506, MRT+LES)
+        specs.push_back(
+            defaultCase()); // the defaults are the paper's submerged column (tau 0.506, MRT+LES)
         specs.back().grains.packing = fraction;
         packings.push_back(dem::generatePacking(packingRequest(specs.back())));
     }

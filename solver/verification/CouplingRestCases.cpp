@@ -81,7 +81,7 @@ VerificationResult restRecord(const std::string& quantity, double ratio, double 
     r.tolerance = kRestTolerance;
     r.passed = std::isfinite(ratio) && ratio <= kRestTolerance;
     r.wall_s = wall;
-    r.method = coupling::couplingMethodName(method);
+    r.method = enumWord(method);
     r.source =
         "Equilibrium: a body at rest in fluid at rest feels no net force (excess pressure zero "
         "everywhere); an unwetted part of a surface must contribute nothing";
@@ -127,10 +127,11 @@ struct ColumnRest {
 
 ColumnRest columnAtRest(CouplingMethod method, double resolution, int threads) {
     const auto start = Clock::now();
-    CaseSpec spec; // the defaults are the paper's dense column on a 5 degree slope, submerged
+    CaseSpec spec =
+        defaultCase(); // the defaults are the paper's dense column on a 5 degree slope, submerged
     spec.name = "column-at-rest";
     spec.fluid.resolution = resolution;
-    spec.coupling.method = coupling::couplingMethodName(method);
+    spec.coupling.method = method;
     spec.run.end_tc = 0.5;
     spec.run.gate_release_tc = 1e3; // held for the whole run
     spec.run.threads = threads;
@@ -186,7 +187,7 @@ std::vector<VerificationResult> columnRest(const VerificationOptions& options) {
                                                "weight (d_min/h = %g; floor alone %.4f)",
                                                resolution, rest.floor_ratio),
                                 rest.support_ratio, 1.0, 0.01, source);
-            floor.method = coupling::couplingMethodName(m);
+            floor.method = enumWord(m);
             floor.wall_s = rest.wall_s;
             out.push_back(floor);
             VerificationResult speed;

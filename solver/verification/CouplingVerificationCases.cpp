@@ -21,7 +21,7 @@ VerificationResult relative(const std::string& name, const std::string& quantity
     VerificationResult r = compareRelative(name, quantity, run.value, reference, tolerance, source);
     r.passed = r.passed && run.finite;
     r.wall_s = run.wall_s;
-    r.method = coupling::couplingMethodName(method);
+    r.method = enumWord(method);
     return r;
 }
 
@@ -99,7 +99,7 @@ std::vector<VerificationResult> permeability(const VerificationOptions& options)
         r.tolerance = 1;
         r.passed = finite && worst < 1;
         r.wall_s = wall;
-        r.method = coupling::couplingMethodName(m);
+        r.method = enumWord(m);
         r.source = "Kumar et al. (paper) Fig. 3; Carman-Kozeny n^3/(80 (1-n)^2) for cylinders, "
                    "table in ./coupling-permeability.csv";
         out.push_back(r);

@@ -20,7 +20,7 @@ constexpr int kOnsetPhases = 16;
 /// The paper's grain parameters (docs/design.md §5b) for a dry case with restitution e and its DEM
 /// step.
 CaseSpec demCase(double restitution) {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.enabled = false;
     spec.grains.restitution = restitution;
     spec.grains.rolling_resistance = 0;

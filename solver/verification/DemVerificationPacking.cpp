@@ -17,7 +17,7 @@ namespace {
 
 VerificationResult packingResult(double target, const char* label) {
     const auto start = std::chrono::steady_clock::now();
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.grains.packing = target;
     dem::PackingOptions options;
     options.use_cache = false; // measure the generator itself, not a cached file
@@ -67,7 +67,7 @@ double runoutFront(const dem::Particles& p, double tol) {
 /// Normalised runout (L_f - L_i) / L_i of a dry column of aspect ratio about a on a flat floor;
 /// writes the column's measured aspect ratio H_i / L_i to measuredAspect.
 double collapseRunout(double aspect, int count, double& measuredAspect) {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.enabled = false;
     spec.domain.slope_deg = 0;
     spec.grains.count = count;

@@ -100,19 +100,19 @@ struct ResolutionSeries {
     }
 };
 
-ResolutionSeries runSeries(const std::string& scene, const VerificationOptions& options) {
+ResolutionSeries runSeries(SceneKind scene, const VerificationOptions& options) {
     ResolutionSeries series;
     series.nodes = {16, 32, 64};
     if (options.long_run) series.nodes.push_back(128);
     for (int n : series.nodes) {
-        series.runs.push_back(runFlow(fluidCase(scene, n, "mrt")));
+        series.runs.push_back(runFlow(fluidCase(scene, n, lattice::CollisionModel::Mrt)));
         series.wall_s += series.runs.back().wall_s;
     }
     return series;
 }
 
 std::vector<VerificationResult> poiseuille(const VerificationOptions& options) {
-    const ResolutionSeries series = runSeries("poiseuille", options);
+    const ResolutionSeries series = runSeries(SceneKind::Poiseuille, options);
     auto r = bounded("poiseuille", "L2 relative velocity error (16 nodes across)",
                      series.at(16).metrics.at("l2_error"), 1e-3, kPoiseuilleSource);
     r.method = "mrt";
@@ -123,7 +123,7 @@ std::vector<VerificationResult> poiseuille(const VerificationOptions& options) {
 }
 
 std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) {
-    const ResolutionSeries series = runSeries("taylor_green", options);
+    const ResolutionSeries series = runSeries(SceneKind::TaylorGreen, options);
     const FlowRun& run = series.at(32);
     auto r = compareRelative("taylor-green", "decay rate [1/s] (32 nodes per wavelength)",
                              run.metrics.at("decay_rate_1_s"),
@@ -135,7 +135,8 @@ std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) 
     order.wall_s = series.wall_s;
     std::vector<VerificationResult> out{r, order};
     // LES at low Re: the Smagorinsky eddy viscosity must not spoil a resolved laminar flow.
-    const FlowRun les = runFlow(fluidCase("taylor_green", 32, "mrt_les"));
+    const FlowRun les =
+        runFlow(fluidCase(SceneKind::TaylorGreen, 32, lattice::CollisionModel::MrtLes));
     auto withLes =
         compareRelative("taylor-green", "decay rate [1/s] with LES on (32 nodes, Re = 10)",
                         les.metrics.at("decay_rate_1_s"), les.metrics.at("decay_rate_analytic_1_s"),
@@ -147,7 +148,7 @@ std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) 
 }
 
 std::vector<VerificationResult> cavity(const VerificationOptions& options) {
-    const FlowRun run = runFlow(fluidCase("cavity", 128, "mrt"));
+    const FlowRun run = runFlow(fluidCase(SceneKind::Cavity, 128, lattice::CollisionModel::Mrt));
     auto r = bounded("cavity-re100", "max |u/U - Ghia| on the vertical centreline (128^2)",
                      run.metrics.at("ghia_max_deviation"), 0.01,
                      "Ghia, Ghia & Shin, J. Comput. Phys. 48 (1982) 387, Table I");
@@ -158,7 +159,7 @@ std::vector<VerificationResult> cavity(const VerificationOptions& options) {
 
 std::vector<VerificationResult> cylinder(const VerificationOptions& options) {
     const int d = options.long_run ? 40 : 20;
-    const FlowRun run = runFlow(fluidCase("cylinder", d, "mrt"));
+    const FlowRun run = runFlow(fluidCase(SceneKind::Cylinder, d, lattice::CollisionModel::Mrt));
     const char* source =
         "Schäfer & Turek (1996), 2D-1 (Re = 20): C_D in [5.57, 5.59], dp in [0.1172, 0.1176]";
     const std::string tag = " (D = " + std::to_string(d) + " nodes)";

@@ -10,16 +10,16 @@
 
 namespace lbdem::solver {
 
-CaseSpec fluidCase(const std::string& scene, int nodes, const std::string& collision) {
+CaseSpec fluidCase(SceneKind scene, int nodes, lattice::CollisionModel collision) {
     // Keep in step with sample_cases/verification/*.toml (a test compares them).
-    CaseSpec c;
+    CaseSpec c = defaultCase();
     c.scene = scene;
-    c.name = scene;
+    c.name = enumWord(scene);
     c.grains.count = 0;
     c.fluid.enabled = true;
     c.fluid.collision = collision;
     c.flow.nodes = nodes;
-    if (scene == "poiseuille") {
+    if (scene == SceneKind::Poiseuille) {
         c.domain.height_m = 0.01; // channel width H
         c.domain.width_m = 0.0025;
         c.flow.reynolds = 10;
@@ -29,15 +29,15 @@ CaseSpec fluidCase(const std::string& scene, int nodes, const std::string& colli
         // measurable second-order error left for the convergence study; s_q = 1.9 (the general
         // default, Lambda = 0.008) gives 5e-3 at 16 nodes.
         c.fluid.s_q = 1.0 / (0.5 + (1.0 / 6.0) / (c.flow.tau - 0.5));
-    } else if (scene == "taylor_green") {
+    } else if (scene == SceneKind::TaylorGreen) {
         c.domain.height_m = c.domain.width_m = 0.01; // one wavelength
         c.flow.reynolds = 10;
         c.flow.tau = 0.8;
-    } else if (scene == "cavity") {
+    } else if (scene == SceneKind::Cavity) {
         c.domain.height_m = c.domain.width_m = 0.1;
         c.flow.reynolds = 100;
         c.flow.lattice_velocity = 0.1;
-    } else if (scene == "cylinder") {
+    } else if (scene == SceneKind::Cylinder) {
         // Schäfer & Turek (1996) 2D-1: 2.2 m x 0.41 m, D = 0.1 m, rho = 1, nu = 1e-3, U_mean = 0.2.
         c.domain.width_m = 2.2;
         c.domain.height_m = 0.41;
@@ -55,7 +55,8 @@ CaseSpec fluidCase(const std::string& scene, int nodes, const std::string& colli
             0.5 + 3.0 * (2.0 / 3.0) * c.flow.lattice_velocity * nodes / c.flow.reynolds;
         c.fluid.s_q = 1.0 / (0.5 + (3.0 / 16.0) / (tau - 0.5));
     } else {
-        throw InputError("no fluid verification case for scene '" + scene + "'");
+        throw InputError(std::string("no fluid verification case for scene '") + enumWord(scene) +
+                         "'");
     }
     return c;
 }
@@ -63,8 +64,8 @@ CaseSpec fluidCase(const std::string& scene, int nodes, const std::string& colli
 namespace {
 
 // Lid-driven cavity at tau - 0.5 = 1e-4, lid at 0.1 lattice units: Re = 0.1 N / (1e-4 / 3).
-CaseSpec stabilityCase(const std::string& collision) {
-    CaseSpec c = fluidCase("cavity", 64, collision);
+CaseSpec stabilityCase(lattice::CollisionModel collision) {
+    CaseSpec c = fluidCase(SceneKind::Cavity, 64, collision);
     c.name = "stability";
     c.flow.tau = 0.5001;
     c.flow.reynolds = 192000;
@@ -84,7 +85,7 @@ std::vector<VerificationResult> stabilityResults(const VerificationOptions& opti
     {
         // MRT + LES must run all 20,000 steps with the guard passing at every check.
         const auto start = std::chrono::steady_clock::now();
-        const CaseSpec spec = stabilityCase("mrt_les");
+        const CaseSpec spec = stabilityCase(lattice::CollisionModel::MrtLes);
         FlowScene scene(spec, makePlan(spec));
         long long reached = 0;
         std::string failure;
@@ -104,7 +105,7 @@ std::vector<VerificationResult> stabilityResults(const VerificationOptions& opti
         r.tolerance = 0;
         r.passed = failure.empty() && reached == spec.flow.steps;
         r.wall_s = since(start);
-        r.method = "mrt_les";
+        r.method = enumWord(spec.fluid.collision);
         r.source = failure.empty() ? "stability guard: NaN, rho <= 0 or Mach > 0.5 never seen"
                                    : "stopped: " + failure;
         out.push_back(r);
@@ -112,7 +113,7 @@ std::vector<VerificationResult> stabilityResults(const VerificationOptions& opti
     {
         // BGK at the same tau diverges; the guard must stop it and blame tau without LES.
         const auto start = std::chrono::steady_clock::now();
-        const CaseSpec spec = stabilityCase("bgk");
+        const CaseSpec spec = stabilityCase(lattice::CollisionModel::Bgk);
         FlowScene scene(spec, makePlan(spec));
         std::string message;
         try {
@@ -130,7 +131,7 @@ std::vector<VerificationResult> stabilityResults(const VerificationOptions& opti
         r.tolerance = 0;
         r.passed = diagnosed;
         r.wall_s = since(start);
-        r.method = "bgk";
+        r.method = enumWord(spec.fluid.collision);
         r.source = message.empty() ? "the guard did not stop the run" : "guard: " + message;
         out.push_back(r);
     }

@@ -48,9 +48,9 @@ private slots:
             {solver::SceneKind::TaylorGreen, "verification/taylor_green.toml"},
             {solver::SceneKind::Cavity, "verification/cavity_re100.toml"},
             {solver::SceneKind::Cylinder, "verification/cylinder_2d1.toml"}};
-        QCOMPARE(solver::sceneNames().size(), solver::sceneDecls().size());
+        QCOMPARE(solver::enumValues<solver::SceneKind>().size(), solver::sceneDecls().size());
         for (const auto& decl : solver::sceneDecls()) {
-            QCOMPARE(solver::sceneFromName(decl.name), decl.kind);
+            QCOMPARE(solver::sceneDecl(decl.kind).kind, decl.kind); // in enum order
             const auto sample = samples.find(decl.kind);
             // Only the scenes `lbdem run` can run are studied; each has a sample case.
             QCOMPARE(decl.studyMetric.empty(), sample == samples.end());
@@ -58,7 +58,7 @@ private slots:
             QVERIFY2(solver::CaseSchema::instance().find(decl.resolutionKey),
                      decl.resolutionKey.c_str());
             const auto spec = sampleCase(sample->second);
-            QCOMPARE(spec.scene, decl.name);
+            QCOMPARE(spec.scene, decl.kind);
             const std::string metric = campaign::defaultStudyMetric(spec);
             QCOMPARE(metric, decl.studyMetric);
             QCOMPARE(campaign::resolveStudyMetric(spec, metric).name, metric);

@@ -64,12 +64,12 @@ void CaseParserTest::badCase() {
 }
 
 void CaseParserTest::defaultsRoundTrip() {
-    solver::CaseSpec changed;
+    solver::CaseSpec changed = solver::defaultCase();
     changed.name = "round_trip-2.v1"; // every character a case name may hold
     changed.fluid.tau = 0.5123;
     changed.grains.count = 321;
     changed.fluid.enabled = false;
-    changed.coupling.method = "psm";
+    changed.coupling.method = solver::coupling::CouplingMethod::Psm;
     const std::string text = io::formatCase(changed);
     const solver::CaseSpec back = io::parseCase(text, "roundtrip.toml");
     for (const auto& decl : solver::CaseSchema::instance().params())
@@ -84,7 +84,7 @@ void CaseParserTest::overrides() {
     QCOMPARE(spec.fluid.tau, 0.52);
     QCOMPARE(spec.grains.count, 40);
     QCOMPARE(spec.fluid.enabled, false);
-    QCOMPARE(QString::fromStdString(spec.fluid.collision), QString("bgk"));
+    QCOMPARE(spec.fluid.collision, solver::lattice::CollisionModel::Bgk);
     QCOMPARE(QString::fromStdString(spec.name), QString("quoted"));
 }
 

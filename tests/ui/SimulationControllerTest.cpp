@@ -137,7 +137,8 @@ private slots:
         SimulationController controller;
         QSignalSpy failed(&controller, &SimulationController::failed);
         lbdem::solver::CaseSpec spec = lbdem::studio::test::smallCase();
-        spec.scene = "settling_disc"; // a scene only `lbdem verify` runs: building it fails
+        spec.scene = lbdem::solver::SceneKind::SettlingDisc; // a scene only `lbdem verify` runs:
+                                                             // building it fails
         controller.load(spec);
         QVERIFY(failed.wait(20000));
         QVERIFY(!failed.last().at(0).toString().isEmpty());

@@ -16,7 +16,7 @@ private slots:
 };
 
 void DemColumnSceneTest::gravityTiltsAndBuoys() {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.domain.slope_deg = 30;
     spec.fluid.enabled = false;
     const Vec2 dry = grainGravity(spec);
@@ -28,7 +28,7 @@ void DemColumnSceneTest::gravityTiltsAndBuoys() {
 }
 
 void DemColumnSceneTest::columnCollapsesPastGate() {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.enabled = false;
     spec.domain.slope_deg = 5;
     spec.grains.count = 150;

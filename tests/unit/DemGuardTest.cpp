@@ -72,7 +72,7 @@ void DemGuardTest::fastGrainStops() {
 void DemGuardTest::unstableColumnStopsNamingTheDem() {
     // A dry column stepped 30 times beyond the integrator's limit: before the guard, the grains'
     // coordinates overflowed and the neighbour grid crashed; now the run stops with a diagnosis.
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.enabled = false;
     spec.grains.count = 150;
     spec.grains.packing = 0.79;

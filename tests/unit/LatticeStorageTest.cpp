@@ -91,9 +91,9 @@ void LatticeStorageTest::restIsStoredAsZeroDeviation() {
             QCOMPARE(stored[k], storage == PopulationStorage::Float ? 0.0 : w);
         }
     }
-    QCOMPARE(storageFromName("float"), PopulationStorage::Float);
-    QCOMPARE(std::string(storageName(PopulationStorage::Double)), std::string("double"));
-    QVERIFY_EXCEPTION_THROWN(storageFromName("half"), std::invalid_argument);
+    QCOMPARE(enumFromWord<PopulationStorage>("float"), std::optional(PopulationStorage::Float));
+    QCOMPARE(std::string(enumWord(PopulationStorage::Double)), std::string("double"));
+    QVERIFY(!enumFromWord<PopulationStorage>("half"));
 }
 
 void LatticeStorageTest::accessorsRoundToFloat() {

@@ -25,7 +25,7 @@ private slots:
 
 void PlanTest::paperTimeStepFromTau() {
     // Kumar et al.: h = 0.1 mm, tau = 0.506, nu = 1e-6 m^2/s  =>  dt = 2e-5 s, 2000 x 1000 nodes.
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.grains.d_min_m = 1e-3;
     spec.fluid.resolution = 10;
     spec.fluid.tau = 0.506;
@@ -38,7 +38,7 @@ void PlanTest::paperTimeStepFromTau() {
 }
 
 void PlanTest::tauFromMach() {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.tau = 0;
     spec.fluid.target_mach = 0.1;
     const Plan plan = makePlan(spec);
@@ -50,7 +50,7 @@ void PlanTest::tauFromMach() {
 }
 
 void PlanTest::dryScenePlansNoLattice() {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.enabled = false;
     const Plan plan = makePlan(spec);
     QVERIFY(!plan.has_fluid);
@@ -80,11 +80,11 @@ void PlanTest::contactDurationUndamped() {
 }
 
 void PlanTest::warnsWhenTauNearHalfWithoutLes() {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.tau = 0.506;
-    spec.fluid.collision = "bgk";
+    spec.fluid.collision = lattice::CollisionModel::Bgk;
     QVERIFY(!makePlan(spec).warnings.empty());
-    spec.fluid.collision = "mrt_les";
+    spec.fluid.collision = lattice::CollisionModel::MrtLes;
     for (const auto& warning : makePlan(spec).warnings)
         QVERIFY(warning.find("LES") == std::string::npos);
 }
@@ -92,7 +92,7 @@ void PlanTest::warnsWhenTauNearHalfWithoutLes() {
 void PlanTest::saysHowFarAFrontCanRun() {
     // Room for the front: Delta L = (width - layer - L_i) / L_i, against the thesis's longest
     // submerged runout (Delta L ~ 3.1): the paper's 0.2 m falls short, 0.4 m leaves room.
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.fluid.resolution = 6; // h = 0.2 mm: the default 24-node layer is 4.8 mm thick
     Plan plan = makePlan(spec);
     const double li = plan.column.width_m;
@@ -105,7 +105,7 @@ void PlanTest::saysHowFarAFrontCanRun() {
     QVERIFY(plan.runout_room > 5);
     QVERIFY(plan.notes.at(0).find("beyond") != std::string::npos);
     // No layer without an open side: the front meets the end wall.
-    spec.domain.right = spec.domain.top = "wall";
+    spec.domain.right = spec.domain.top = lattice::SideType::Wall;
     plan = makePlan(spec);
     QCOMPARE(plan.absorbing_layer_nodes, 0);
     QVERIFY(std::abs(plan.runout_room - (0.4 - li) / li) < 1e-9);
@@ -114,7 +114,7 @@ void PlanTest::saysHowFarAFrontCanRun() {
 
 void PlanTest::demStepIsTheOneUsed() {
     // A coupled run advances the DEM by dt / substeps: that is the step the plan reports.
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     const Plan plan = makePlan(spec);
     QVERIFY(plan.substeps > 1);
     QCOMPARE(plan.dem_dt_s, plan.dt_s / plan.substeps);
@@ -123,7 +123,7 @@ void PlanTest::demStepIsTheOneUsed() {
 }
 
 void PlanTest::substepsBeyondStabilityRefused() {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     spec.coupling.substeps = 1;
     try {
         makePlan(spec);
@@ -134,7 +134,7 @@ void PlanTest::substepsBeyondStabilityRefused() {
                  error.what());
     }
     // Between the safety factor and the stability limit: planned, with a warning.
-    const Plan automatic = makePlan(CaseSpec{});
+    const Plan automatic = makePlan(defaultCase());
     spec.coupling.substeps =
         static_cast<int>(std::ceil(automatic.dt_s / automatic.dem_dt_stable_s)) + 1;
     const Plan plan = makePlan(spec);
@@ -147,7 +147,7 @@ void PlanTest::substepsBeyondStabilityRefused() {
 }
 
 void PlanTest::estimatesOutputBytes() {
-    CaseSpec spec;
+    CaseSpec spec = defaultCase();
     const Plan every = makePlan(spec);
     QVERIFY(every.output_bytes > 0);
     QVERIFY(every.memory_bytes > every.output_bytes / 100);

@@ -37,7 +37,9 @@ void FluidCasesTest::sampleMatchesBuilder() {
     QFETCH(QString, collision);
     const auto fromFile =
         io::loadCase(LBDEM_SOURCE_DIR "/sample_cases/verification/" + file.toStdString());
-    const auto built = solver::fluidCase(scene.toStdString(), nodes, collision.toStdString());
+    const auto built = solver::fluidCase(
+        solver::enumFromWord<solver::SceneKind>(scene.toStdString()).value(), nodes,
+        solver::enumFromWord<solver::lattice::CollisionModel>(collision.toStdString()).value());
     const auto a = solver::flowScales(fromFile), b = solver::flowScales(built);
     QCOMPARE(fromFile.scene, built.scene);
     QCOMPARE(fromFile.fluid.collision, built.fluid.collision);

@@ -72,7 +72,7 @@ std::optional<ParamValue> parseNumber(const QString& text) {
 
 CaseEditor::CaseEditor(QWidget* parent) : QWidget(parent) {
     build();
-    setCase(solver::CaseSpec{});
+    setCase(solver::defaultCase());
 }
 
 CaseEditor::~CaseEditor() = default;
@@ -186,7 +186,7 @@ QString CaseEditor::fieldError(const QString& path) const {
 void CaseEditor::revalidate() {
     if (m_filling) return;
     const bool wasValid = isValid();
-    solver::CaseSpec spec;
+    solver::CaseSpec spec = solver::defaultCase();
     QStringList problems;
     std::vector<QString> errors(m_fields.size());
     for (std::size_t k = 0; k < m_fields.size(); ++k) {
