@@ -12,7 +12,7 @@ namespace lbdem::campaign {
 
 /// One run of a sweep (a case, or a case with one packing seed of an ensemble) and its folder.
 struct SweepEntry {
-    solver::CaseSpec spec;
+    solver::CaseSpec spec = solver::defaultCase();
     std::filesystem::path dir;
     int seed = 0; ///< the packing seed of an ensemble run; 0 outside an ensemble
 };

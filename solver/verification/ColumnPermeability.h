@@ -113,7 +113,4 @@ ColumnPermeabilityPoint columnPermeability(const CaseSpec& spec, const dem::Pack
 void writeColumnPermeabilityCsv(const std::string& path,
                                 const std::vector<ColumnPermeabilityPoint>& points);
 
-/// The column-permeability verification case (slow): dense and loose columns, both methods.
-std::vector<VerificationCase> columnPermeabilityCases();
-
 } // namespace lbdem::solver

@@ -1,6 +1,7 @@
 // The column-permeability verification case: K of the paper's dense and loose columns against
 // d_min / h, Carman-Kozeny and the thesis's value at r_h = 0.9 R.
 #include "solver/verification/ColumnPermeability.h"
+#include "solver/verification/VerificationRunners.h"
 
 #include "solver/scene/ColumnScene.h"
 #include "solver/scene/FluidFields.h"
@@ -119,7 +120,9 @@ void diagnose(const CaseSpec& spec, const dem::Packing& packing,
     writeColumnPermeabilityCsv("column-permeability.csv", all);
 }
 
-std::vector<VerificationResult> columnPermeabilityRun(const VerificationOptions& options) {
+} // namespace
+
+std::vector<VerificationResult> verifyColumnPermeability(const VerificationOptions& options) {
     std::vector<double> resolutions = {6, 8, 10, 12};
     if (options.long_run) resolutions.push_back(16);
     const std::pair<const char*, double> columns[] = {{"dense", 0.83}, {"loose", 0.79}};
@@ -149,15 +152,6 @@ std::vector<VerificationResult> columnPermeabilityRun(const VerificationOptions&
         }
     if (options.long_run) diagnose(specs[0], packings[0], all, out);
     return out;
-}
-
-} // namespace
-
-std::vector<VerificationCase> columnPermeabilityCases() {
-    return {{"column-permeability",
-             "K of the dense and loose paper columns (window, grains fixed, pressure drop) at "
-             "d_min/h = 6-12 (16 with --long) against Carman-Kozeny",
-             columnPermeabilityRun, true}};
 }
 
 } // namespace lbdem::solver

@@ -2,6 +2,7 @@
 // puts its buoyant weight on the floor.
 #include "solver/core/Constants.h"
 #include "solver/verification/CouplingVerification.h"
+#include "solver/verification/VerificationRunners.h"
 
 #include "solver/dem/DemSystem.h"
 #include "solver/lattice/Lattice.h"
@@ -88,35 +89,6 @@ VerificationResult restRecord(const std::string& quantity, double ratio, double 
     return r;
 }
 
-std::vector<VerificationResult> nearContact(const VerificationOptions& options) {
-    // Gaps between the hydrodynamic surfaces (r_h = 0.9 R), in lattice nodes: at 0 the two
-    // discs the fluid sees touch, and the surfaces facing each other have no fluid node between.
-    const double h = kDiameter / kNodesPerDiameter, radius = kDiameter / 2,
-                 hydro = kHydroRatio * radius;
-    const double mid = 4 * kDiameter;
-    std::vector<VerificationResult> out;
-    for (CouplingMethod m : kMethods) {
-        for (double gap : {0.0, 0.25, 0.5, 1.0, 1.5}) {
-            const auto start = Clock::now();
-            // Off the lattice's symmetry lines so that the links are not a special case.
-            const double x0 = mid - hydro - gap * h / 2 + 0.137 * h, y0 = mid + 0.291 * h;
-            const double ratio =
-                restForceRatio(m, {{x0, y0}, {x0 + 2 * hydro + gap * h, y0}}, radius);
-            out.push_back(restRecord("max |F| / buoyant weight, two discs, gap " +
-                                         formatQuantity("%g", gap) + " nodes",
-                                     ratio, secondsSince(start), m));
-        }
-        for (double gap : {0.0, 0.25, 0.5, 1.0}) {
-            const auto start = Clock::now();
-            const double ratio = restForceRatio(m, {{mid + 0.137 * h, hydro + gap * h}}, radius);
-            out.push_back(restRecord("max |F| / buoyant weight, disc " + formatQuantity("%g", gap) +
-                                         " nodes above the floor",
-                                     ratio, secondsSince(start), m));
-        }
-    }
-    return out;
-}
-
 /// The dense paper column held by its gate in still water for 0.5 tau_c: returns the floor's
 /// normal force and the walls' whole support normal to the floor (floor normal force plus the
 /// side walls' friction), each over the column's buoyant weight normal to the slope, and the
@@ -168,7 +140,38 @@ ColumnRest columnAtRest(CouplingMethod method, double resolution, int threads) {
     return rest;
 }
 
-std::vector<VerificationResult> columnRest(const VerificationOptions& options) {
+} // namespace
+
+std::vector<VerificationResult> verifyNearContact(const VerificationOptions& options) {
+    // Gaps between the hydrodynamic surfaces (r_h = 0.9 R), in lattice nodes: at 0 the two
+    // discs the fluid sees touch, and the surfaces facing each other have no fluid node between.
+    const double h = kDiameter / kNodesPerDiameter, radius = kDiameter / 2,
+                 hydro = kHydroRatio * radius;
+    const double mid = 4 * kDiameter;
+    std::vector<VerificationResult> out;
+    for (CouplingMethod m : kMethods) {
+        for (double gap : {0.0, 0.25, 0.5, 1.0, 1.5}) {
+            const auto start = Clock::now();
+            // Off the lattice's symmetry lines so that the links are not a special case.
+            const double x0 = mid - hydro - gap * h / 2 + 0.137 * h, y0 = mid + 0.291 * h;
+            const double ratio =
+                restForceRatio(m, {{x0, y0}, {x0 + 2 * hydro + gap * h, y0}}, radius);
+            out.push_back(restRecord("max |F| / buoyant weight, two discs, gap " +
+                                         formatQuantity("%g", gap) + " nodes",
+                                     ratio, secondsSince(start), m));
+        }
+        for (double gap : {0.0, 0.25, 0.5, 1.0}) {
+            const auto start = Clock::now();
+            const double ratio = restForceRatio(m, {{mid + 0.137 * h, hydro + gap * h}}, radius);
+            out.push_back(restRecord("max |F| / buoyant weight, disc " + formatQuantity("%g", gap) +
+                                         " nodes above the floor",
+                                     ratio, secondsSince(start), m));
+        }
+    }
+    return out;
+}
+
+std::vector<VerificationResult> verifyColumnAtRest(const VerificationOptions& options) {
     const char* source =
         "Equilibrium: a column at rest in still water puts its buoyant weight on the floor "
         "(Archimedes; the lattice pressure is the excess pressure, zero at rest)";
@@ -202,19 +205,6 @@ std::vector<VerificationResult> columnRest(const VerificationOptions& options) {
             out.push_back(speed);
         }
     return out;
-}
-
-} // namespace
-
-std::vector<VerificationCase> couplingRestCases() {
-    return {
-        {"near-contact",
-         "discs at rest in still water at gaps of 0-1.5 nodes, and above the floor, feel no force",
-         nearContact},
-        {"column-at-rest",
-         "the dense paper column held in still water puts its buoyant weight on the floor",
-         columnRest, true},
-    };
 }
 
 } // namespace lbdem::solver

@@ -11,11 +11,6 @@
 
 namespace lbdem::solver {
 
-/// settling-disc, gebart-square, disc-shear and permeability, each with both coupling methods.
-std::vector<VerificationCase> couplingVerificationCases();
-/// near-contact and column-at-rest (equilibrium at rest), each with both coupling methods.
-std::vector<VerificationCase> couplingRestCases();
-
 /// Result of one coupled scene run.
 struct CouplingRun {
     double value = 0;    ///< the measured quantity (see each scene)

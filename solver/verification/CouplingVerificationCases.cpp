@@ -2,6 +2,7 @@
 // side.
 #include "solver/core/Constants.h"
 #include "solver/verification/CouplingVerification.h"
+#include "solver/verification/VerificationRunners.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +26,9 @@ VerificationResult relative(const std::string& name, const std::string& quantity
     return r;
 }
 
-std::vector<VerificationResult> settling(const VerificationOptions& options) {
+} // namespace
+
+std::vector<VerificationResult> verifySettlingDisc(const VerificationOptions& options) {
     // Quick: 16 nodes per d, where the PSM disc is still effectively larger than its radius and
     // settles ~6 % slow (bounce-back is within 1 %), hence 10 %. Long: 32 nodes per d, 5 %.
     const int nodes = options.long_run ? 32 : 16;
@@ -39,7 +42,7 @@ std::vector<VerificationResult> settling(const VerificationOptions& options) {
     return out;
 }
 
-std::vector<VerificationResult> gebart(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyGebartSquare(const VerificationOptions& options) {
     // K_perp / R^2 = C (sqrt(phi_max / phi) - 1)^(5/2), C = 16 / (9 pi sqrt 2), phi_max = pi / 4
     // for a square array (Gebart 1992): 0.0129 at phi = 0.5. The formula is a lubrication
     // approximation; the converged lattice value is ~0.0118, 8.5 % below it.
@@ -55,7 +58,7 @@ std::vector<VerificationResult> gebart(const VerificationOptions& options) {
     return out;
 }
 
-std::vector<VerificationResult> shear(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyDiscShear(const VerificationOptions& options) {
     // At Re_p = 0.1 fluid inertia alone slows a 2D disc by ~2 % (measured: 0.987 at 8 d, 0.982
     // at 16 d between the walls), so the case runs at Re_p = 0.01 in a 16 d channel.
     const int nodes = options.long_run ? 16 : 8;
@@ -70,7 +73,7 @@ std::vector<VerificationResult> shear(const VerificationOptions& options) {
     return out;
 }
 
-std::vector<VerificationResult> permeability(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyPermeability(const VerificationOptions& options) {
     const std::vector<double> ratios = {0.7, 0.75, 0.8, 0.85, 0.9, 0.95};
     const int nodes = options.long_run ? 12 : 8, box = options.long_run ? 12 : 10;
     std::vector<std::string> names;
@@ -108,22 +111,6 @@ std::vector<VerificationResult> permeability(const VerificationOptions& options)
     }
     writePermeabilityCsv("coupling-permeability.csv", names, sweeps);
     return out;
-}
-
-} // namespace
-
-std::vector<VerificationCase> couplingVerificationCases() {
-    return {
-        {"settling-disc",
-         "disc settling in a 4 d channel at Re 259.5 (Wachs 2009), both coupling methods",
-         settling},
-        {"gebart-square",
-         "permeability of a square cylinder array at solid fraction 0.5 (Gebart 1992)", gebart},
-        {"disc-shear", "free disc in simple shear rotates at half the vorticity", shear},
-        {"permeability",
-         "random disc packing: K falls with the hydrodynamic radius; vs Carman-Kozeny",
-         permeability},
-    };
 }
 
 } // namespace lbdem::solver

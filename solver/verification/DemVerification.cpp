@@ -1,6 +1,6 @@
 // DEM verification: binary restitution and a disc on a 45-degree incline against analytic values.
-#include "solver/verification/DemVerification.h"
 #include "solver/core/Constants.h"
+#include "solver/verification/VerificationRunners.h"
 
 #include "solver/dem/DemSystem.h"
 #include "solver/scene/ColumnScene.h"
@@ -114,7 +114,9 @@ InclineRun incline(double wallFriction) {
     return {(p.vx[0] - v0) / span, -(p.omega[0] - w0) / span};
 }
 
-std::vector<VerificationResult> inclineResults() {
+} // namespace
+
+std::vector<VerificationResult> verifyIncline(const VerificationOptions&) {
     const double beta = kPi / 4, g = 9.81, r = 0.6e-3;
     const char* source =
         "rigid-body mechanics of a disc on an incline (e.g. Goldstein, Classical Mechanics)";
@@ -150,30 +152,12 @@ std::vector<VerificationResult> inclineResults() {
     return out;
 }
 
-} // namespace
-
-std::vector<VerificationCase> demVerificationCases() {
-    return {
-        {"restitution",
-         "binary disc-disc and disc-wall collisions reach e = 0.1, 0.5, 0.9 (|error| <= 0.005)",
-         [](const VerificationOptions&) {
-             std::vector<VerificationResult> out;
-             for (bool wall : {false, true})
-                 for (double e : {0.1, 0.5, 0.9})
-                     out.push_back(restitutionResult(e, wall));
-             return out;
-         }},
-        {"incline",
-         "disc on a 45-degree slope: frictionless, rolling and slipping accelerations (0.5 %)",
-         [](const VerificationOptions&) { return inclineResults(); }},
-        {"packing",
-         "packing generator meets the dense (0.83) and loose (0.79) targets within 0.005",
-         [](const VerificationOptions& options) { return packingResults(options); }},
-        {"dry-collapse-scaling",
-         "dry column collapse: normalised runout grows linearly with a (a <= 1.5)",
-         [](const VerificationOptions& options) { return dryCollapseScalingResults(options); },
-         true},
-    };
+std::vector<VerificationResult> verifyRestitution(const VerificationOptions&) {
+    std::vector<VerificationResult> out;
+    for (bool wall : {false, true})
+        for (double e : {0.1, 0.5, 0.9})
+            out.push_back(restitutionResult(e, wall));
+    return out;
 }
 
 } // namespace lbdem::solver

@@ -1,5 +1,5 @@
 // DEM verification: packing-generator targets and the dry-collapse runout scaling (--long).
-#include "solver/verification/DemVerification.h"
+#include "solver/verification/VerificationRunners.h"
 
 #include "solver/dem/Packing.h"
 #include "solver/scene/ColumnScene.h"

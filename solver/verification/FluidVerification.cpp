@@ -1,5 +1,6 @@
 // Fluid verification: Poiseuille, Taylor-Green, lid-driven cavity, cylinder, stability guard.
 #include "solver/verification/FluidVerification.h"
+#include "solver/verification/VerificationRunners.h"
 
 #include "solver/core/InputError.h"
 #include "solver/scene/FlowScene.h"
@@ -111,7 +112,9 @@ ResolutionSeries runSeries(SceneKind scene, const VerificationOptions& options) 
     return series;
 }
 
-std::vector<VerificationResult> poiseuille(const VerificationOptions& options) {
+} // namespace
+
+std::vector<VerificationResult> verifyPoiseuille(const VerificationOptions& options) {
     const ResolutionSeries series = runSeries(SceneKind::Poiseuille, options);
     auto r = bounded("poiseuille", "L2 relative velocity error (16 nodes across)",
                      series.at(16).metrics.at("l2_error"), 1e-3, kPoiseuilleSource);
@@ -122,7 +125,7 @@ std::vector<VerificationResult> poiseuille(const VerificationOptions& options) {
     return {r, order};
 }
 
-std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyTaylorGreen(const VerificationOptions& options) {
     const ResolutionSeries series = runSeries(SceneKind::TaylorGreen, options);
     const FlowRun& run = series.at(32);
     auto r = compareRelative("taylor-green", "decay rate [1/s] (32 nodes per wavelength)",
@@ -147,7 +150,7 @@ std::vector<VerificationResult> taylorGreen(const VerificationOptions& options) 
     return out;
 }
 
-std::vector<VerificationResult> cavity(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyCavity(const VerificationOptions& options) {
     const FlowRun run = runFlow(fluidCase(SceneKind::Cavity, 128, lattice::CollisionModel::Mrt));
     auto r = bounded("cavity-re100", "max |u/U - Ghia| on the vertical centreline (128^2)",
                      run.metrics.at("ghia_max_deviation"), 0.01,
@@ -157,7 +160,7 @@ std::vector<VerificationResult> cavity(const VerificationOptions& options) {
     return {r};
 }
 
-std::vector<VerificationResult> cylinder(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyCylinder(const VerificationOptions& options) {
     const int d = options.long_run ? 40 : 20;
     const FlowRun run = runFlow(fluidCase(SceneKind::Cylinder, d, lattice::CollisionModel::Mrt));
     const char* source =
@@ -174,27 +177,6 @@ std::vector<VerificationResult> cylinder(const VerificationOptions& options) {
         r->wall_s = run.wall_s;
     }
     return {drag, dp};
-}
-
-} // namespace
-
-std::vector<VerificationResult> stabilityResults(const VerificationOptions& options);
-
-std::vector<VerificationCase> fluidVerificationCases() {
-    return {
-        {"poiseuille", "body-force channel: L2 error <= 1e-3 at 16 nodes, order >= 1.8",
-         poiseuille},
-        {"taylor-green",
-         "decaying vortex: decay rate within 0.5 % at 32 nodes, order >= 1.8, LES within 2 %",
-         taylorGreen},
-        {"cavity-re100",
-         "lid-driven cavity at Re = 100, 128^2: centreline u within 0.01 of Ghia et al.", cavity},
-        {"cylinder-2d1",
-         "Schäfer-Turek 2D-1 (Re = 20): C_D within 2 % of 5.58 (D = 20), dp within 2 %", cylinder},
-        {"stability",
-         "cavity at tau - 0.5 = 1e-4: MRT+LES stays bounded 20,000 steps, BGK is stopped",
-         stabilityResults},
-    };
 }
 
 } // namespace lbdem::solver

@@ -9,9 +9,6 @@
 
 namespace lbdem::solver {
 
-/// poiseuille, taylor-green, cavity-re100, cylinder-2d1 and stability.
-std::vector<VerificationCase> fluidVerificationCases();
-
 /// The case of sample_cases/verification/<file>.toml for scene `scene` (poiseuille,
 /// taylor_green, cavity or cylinder), with the resolution and collision model replaced.
 CaseSpec fluidCase(SceneKind scene, int nodes, lattice::CollisionModel collision);

@@ -1,5 +1,6 @@
 // The cases behind sample_cases/verification/*.toml, and the stability-guard check.
 #include "solver/verification/FluidVerification.h"
+#include "solver/verification/VerificationRunners.h"
 
 #include "solver/core/InputError.h"
 #include "solver/scene/FlowScene.h"
@@ -79,7 +80,7 @@ double since(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-std::vector<VerificationResult> stabilityResults(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyStability(const VerificationOptions& options) {
     (void)options;
     std::vector<VerificationResult> out;
     {
