@@ -5,6 +5,7 @@
 #include "campaign/SweepReport.h"
 #include "campaign/figures/SweepFigures.h"
 #include "solver/core/InputError.h"
+#include "tests/support/SyntheticSweep.h"
 
 #ifdef LBDEM_HAS_VIS
 #include "tests/render/ImageBaseline.h"
@@ -16,40 +17,13 @@
 #include <QtTest>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 using namespace lbdem;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readText(const fs::path& path) {
-    std::ifstream file(path);
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
-}
-
-/// One run of the synthetic ensemble: packing, slope, medium and seed.
-campaign::SweepEntry entry(const fs::path& out, double packing, double slope, bool submerged,
-                           int seed) {
-    campaign::SweepEntry e;
-    char name[64];
-    std::snprintf(name, sizeof name, "%s_%gdeg_%s", packing > 0.81 ? "dense" : "loose", slope,
-                  submerged ? "submerged" : "dry");
-    e.spec.name = name;
-    e.spec.grains.packing = packing;
-    e.spec.domain.slope_deg = slope;
-    e.spec.fluid.enabled = submerged;
-    e.seed = seed;
-    e.dir = out / (std::string(name) + "_s" + std::to_string(seed));
-    return e;
-}
 
 /// The final runout of a synthetic run. Dense dry 2.0 + 0.1 slope + 0.1 seed; dense submerged
 /// 1.5 at 0 deg, and at 5 deg 1.9 (seed 1, shorter than dry), 1.95 (seed 2: its front reaches the
@@ -66,46 +40,17 @@ double finalRunout(const campaign::SweepEntry& e) {
 
 /// timeseries.csv (t/tau_c 0..4, the runout approaching its final value) and summary.json.
 void writeRun(const campaign::SweepEntry& e, const char* status) {
-    fs::create_directories(e.dir);
-    const double runout = finalRunout(e), initialWidth = 0.05;
-    std::ofstream series(e.dir / "timeseries.csv");
+    const double runout = finalRunout(e);
     // Pore pressure: dense -100 seed Pa (suction), loose +10 Pa but -5 Pa for seed 1 at 5 deg.
     const bool dense = e.spec.grains.packing > 0.81;
     const double pore =
         dense ? -100.0 * e.seed : (e.spec.domain.slope_deg > 0 && e.seed == 1 ? -5.0 : 10.0);
-    series << "t_s,t_over_tc,step,ke_over_ep0,runout_m,runout_normalised,froude_densimetric,"
-              "pore_pressure_failure_plane_pa\n";
-    for (int k = 0; k <= 16; ++k) {
-        const double t = 0.25 * k, grown = runout * (1 - std::exp(-t));
-        series << 0.01 * t << "," << t << "," << 100 * k << "," << 0.1 * runout * t * std::exp(-t)
-               << "," << initialWidth * (1 + grown) << "," << grown << ","
-               << 0.5 * runout * t * std::exp(-t) << "," << pore << "\n";
-    }
-    std::ofstream summary(e.dir / "summary.json");
-    const bool finished = std::string(status) == "finished";
-    summary << "{\"finished\": " << (finished ? "true" : "false")
-            << ", \"runout_final\": " << runout << ", \"ke_peak\": " << 0.1 * runout / std::exp(1.0)
-            << ", \"t_ke_peak_over_tc\": 1.0, "
-            << "\"packing_final\": " << (e.spec.grains.packing > 0.81 ? 0.78 : 0.775)
-            << (std::string(status) == "unstable" ? ", \"stop_reason\": \"diverged\"" : "")
-            << "}\n";
+    support::writeSyntheticSeries(e.dir, runout, true, pore);
+    const bool unstable = std::string(status) == "unstable";
+    support::writeSyntheticSummary(e.dir, std::string(status) == "finished", runout,
+                                   0.1 * runout / std::exp(1.0), dense ? 0.78 : 0.775,
+                                   unstable ? ", \"stop_reason\": \"diverged\"" : "");
 }
-
-#ifdef LBDEM_HAS_VIS
-/// Pixels within tolerance per channel of the colour (r, g, b).
-int pixelsNear(vtkImageData* image, int r, int g, int b, int tolerance) {
-    int dims[3];
-    image->GetDimensions(dims);
-    int count = 0;
-    for (int y = 0; y < dims[1]; ++y)
-        for (int x = 0; x < dims[0]; ++x) {
-            const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
-            count += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
-                     std::abs(p[2] - b) <= tolerance;
-        }
-    return count;
-}
-#endif
 
 const campaign::Finding* findingOf(const std::vector<campaign::Finding>& findings,
                                    const std::string& statement, const std::string& where) {
@@ -141,7 +86,8 @@ void SweepEnsembleTest::initTestCase() {
         for (const double slope : {0.0, 5.0})
             for (const bool submerged : {false, true})
                 for (const int seed : {1, 2, 3}) {
-                    m_entries.push_back(entry(m_out, packing, slope, submerged, seed));
+                    m_entries.push_back(
+                        support::syntheticEntry(m_out, packing, slope, submerged, seed));
                     auto& e = m_entries.back();
                     // dense 5 deg submerged, seed 2: a 0.12 m domain, whose end (less one largest
                     // diameter, 0.1178 m) its front passes (0.05 (1 + 1.95 (1 - e^-4)) = 0.146 m).
@@ -214,7 +160,7 @@ void SweepEnsembleTest::spreadPerCase() {
     QCOMPARE(denseWet0.unstable, 1);
     QCOMPARE(cases[3].name, std::string("dense_5deg_submerged"));
     QCOMPARE(cases[3].endReached, 1);
-    const std::string csv = readText(m_out / "sweep.csv");
+    const std::string csv = support::readText(m_out / "sweep.csv");
     QVERIFY2(
         csv.rfind(
             "case,packing,slope_deg,medium,seeds,finished,unstable,front_at_end,runout_final_mean,"
@@ -263,14 +209,14 @@ void SweepEnsembleTest::findingsSeedBySeed() {
     QCOMPARE(suction->seeds(), 2);
     QCOMPARE(excess->holds, 2);
     QCOMPARE(excess->fails, 1);
-    const std::string csv = readText(m_out / "findings.csv");
+    const std::string csv = support::readText(m_out / "findings.csv");
     QVERIFY2(csv.find("\"dense: dry runout longer than submerged\",5 deg,1,1,1,3\n") !=
                  std::string::npos,
              csv.c_str());
 }
 
 void SweepEnsembleTest::reportFiles() {
-    const std::string md = readText(m_out / "sweep.md");
+    const std::string md = support::readText(m_out / "sweep.md");
     QVERIFY2(md.find("## Ensemble over packing seeds") != std::string::npos, md.c_str());
     QVERIFY2(md.find("| dense_0deg_dry | 3 | 3 | 0 | 2.200 ± 0.100 | 2.100–2.300 |") !=
                  std::string::npos,
@@ -286,7 +232,7 @@ void SweepEnsembleTest::reportFiles() {
     QVERIFY2(md.find("## Runs") != std::string::npos &&
                  md.find("| dense_5deg_submerged_s2 |") != std::string::npos,
              md.c_str());
-    const std::string runs = readText(m_out / "runs.csv");
+    const std::string runs = support::readText(m_out / "runs.csv");
     QCOMPARE(std::count(runs.begin(), runs.end(), '\n'), 25L); // header + 24 runs
     QVERIFY2(runs.find("\ndense_0deg_submerged_s3,0.83,0.0,submerged,unfinished,") !=
                  std::string::npos,
@@ -300,12 +246,13 @@ void SweepEnsembleTest::figuresHaveBands() {
     QVERIFY(image);
     // The band of the 5 deg submerged case (1.9 to 3.0 at the end), where no other band lies:
     // Tableau orange (255, 127, 14) at alpha 60/255 over white.
-    const int band = pixelsNear(image, 255, 225, 198, 10);
+    const int band = support::pixelsNear(image, 255, 225, 198, 10);
     QVERIFY2(band > 3000, std::to_string(band).c_str());
     const auto slope = support::readPng((m_out / "runout_vs_slope.png").string());
     QVERIFY(slope);
     // The dense bands: Tableau blue (31, 119, 180) at alpha 60/255 over white.
-    QVERIFY2(pixelsNear(slope, 202, 223, 237, 10) > 3000, "no band in runout_vs_slope.png");
+    QVERIFY2(support::pixelsNear(slope, 202, 223, 237, 10) > 3000,
+             "no band in runout_vs_slope.png");
 #else
     QVERIFY(m_result.note.find("no VTK") != std::string::npos);
 #endif

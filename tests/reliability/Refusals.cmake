@@ -8,23 +8,12 @@ file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")
 set(small --set grains.count=150 --set grains.packing=0.79 --set fluid.resolution=4)
 
+include("${CMAKE_CURRENT_LIST_DIR}/../support/CommandChecks.cmake")
+
 # Runs lbdem with ARGN; fails unless it exits with `expected` and stderr is one line matching
 # `pattern`.
 function(expect_exit expected pattern)
-    execute_process(COMMAND "${LBDEM}" ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err
-                    TIMEOUT 120)
-    if(NOT code STREQUAL "${expected}")
-        message(FATAL_ERROR "lbdem ${ARGN}: exit '${code}', expected ${expected}: ${err}")
-    endif()
-    if(NOT err MATCHES "${pattern}")
-        message(FATAL_ERROR "lbdem ${ARGN}: message does not match '${pattern}': ${err}")
-    endif()
-    string(REGEX MATCHALL "\n" newlines "${err}")
-    list(LENGTH newlines count)
-    string(LENGTH "${err}" length)
-    if(NOT count EQUAL 1 OR length GREATER 1500)
-        message(FATAL_ERROR "lbdem ${ARGN}: expected one line under 1500 bytes, got ${count} lines, ${length} bytes: ${err}")
-    endif()
+    lbdem_expect_exit(${expected} MATCHES "${pattern}" COMMAND "${LBDEM}" ${ARGN})
 endfunction()
 
 # 1. One DEM sub-step per fluid step is far beyond the DEM's stability limit: refused by the

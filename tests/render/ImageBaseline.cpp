@@ -58,6 +58,19 @@ int distinctColours(vtkImageData* image) {
     return static_cast<int>(colours.size());
 }
 
+int pixelsNear(vtkImageData* image, int r, int g, int b, int tolerance) {
+    int dims[3];
+    image->GetDimensions(dims);
+    int count = 0;
+    for (int y = 0; y < dims[1]; ++y)
+        for (int x = 0; x < dims[0]; ++x) {
+            const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+            count += std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
+                     std::abs(p[2] - b) <= tolerance;
+        }
+    return count;
+}
+
 BaselineResult compareWithBaseline(vtkImageData* actual, const std::string& name,
                                    double tolerance) {
     const std::string baselinePath =

@@ -29,4 +29,7 @@ vtkSmartPointer<vtkImageData> readPng(const std::string& path);
 /// Number of distinct RGB colours in `image`, a cheap measure that it is not blank.
 int distinctColours(vtkImageData* image);
 
+/// Number of pixels of `image` whose red, green and blue each lie within `tolerance` of (r, g, b).
+int pixelsNear(vtkImageData* image, int r, int g, int b, int tolerance);
+
 } // namespace lbdem::support

@@ -1,16 +1,5 @@
 # Runs `lbdem info CASE` and checks the bad-input contract: exit code 2 and one sentence that
 # names the file, the line and the suggested key. Usage: cmake -DLBDEM=... -DCASE=... -P this.
-execute_process(COMMAND "${LBDEM}" info "${CASE}" RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_VARIABLE out)
+include("${CMAKE_CURRENT_LIST_DIR}/CommandChecks.cmake")
 get_filename_component(name "${CASE}" NAME)
-if(NOT code EQUAL 2)
-    message(FATAL_ERROR "expected exit code 2, got ${code}: ${err}")
-endif()
-if(NOT err MATCHES "${name}:5:" OR NOT err MATCHES "fluid\\.tau'")
-    message(FATAL_ERROR "message lacks file, line or suggested key: ${err}")
-endif()
-string(REGEX MATCHALL "\n" lines "${err}")
-list(LENGTH lines count)
-if(NOT count EQUAL 1)
-    message(FATAL_ERROR "expected one line, got ${count}: ${err}")
-endif()
-message(STATUS "ok: ${err}")
+lbdem_expect_exit(2 MATCHES "${name}:5:" "fluid\\.tau'" COMMAND "${LBDEM}" info "${CASE}")

@@ -1,24 +1,14 @@
 # `lbdem study` refuses bad input before any run starts: exit code 2, one sentence naming the
 # key, value or metric, and no output folder. Usage: cmake -DLBDEM=... -DCASE=... -DOUT=... -P this.
 file(REMOVE_RECURSE "${OUT}")
+include("${CMAKE_CURRENT_LIST_DIR}/CommandChecks.cmake")
+# Runs `lbdem study CASE --out OUT ARGN`: exit 2, one line matching `expected`, no output folder.
 function(expect_bad expected)
-    execute_process(COMMAND "${LBDEM}" study "${CASE}" --out "${OUT}" ${ARGN}
-                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(NOT code EQUAL 2)
-        message(FATAL_ERROR "${ARGN}: expected exit code 2, got ${code}: ${out}${err}")
-    endif()
-    if(NOT err MATCHES "${expected}")
-        message(FATAL_ERROR "${ARGN}: the message lacks '${expected}': ${err}")
-    endif()
-    string(REGEX MATCHALL "\n" lines "${err}")
-    list(LENGTH lines count)
-    if(NOT count EQUAL 1 OR NOT out STREQUAL "")
-        message(FATAL_ERROR "${ARGN}: expected one line on stderr and nothing else: ${out}${err}")
-    endif()
+    lbdem_expect_exit(2 MATCHES "${expected}" NO_STDOUT
+                      COMMAND "${LBDEM}" study "${CASE}" --out "${OUT}" ${ARGN})
     if(EXISTS "${OUT}")
         message(FATAL_ERROR "${ARGN}: a run was started (${OUT} exists)")
     endif()
-    message(STATUS "ok: ${err}")
 endfunction()
 expect_bad("key 'flow\\.node': unknown key; did you mean 'flow\\.nodes'\\?" --vary flow.node=8,16)
 expect_bad("'abc' is not a whole number" --vary flow.nodes=8,abc)

@@ -1,4 +1,5 @@
-# Checks shared by the `lbdem study` test scripts (include()d by them).
+# Checks shared by the `lbdem study` test scripts (include()d by them), with CommandChecks.cmake.
+include("${CMAKE_CURRENT_LIST_DIR}/CommandChecks.cmake")
 
 # Fail unless OUT holds study.csv, study.md, the extra files named, and study.png when VIS is on.
 function(study_expect_files out vis)

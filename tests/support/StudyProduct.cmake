@@ -6,12 +6,8 @@
 include("${CMAKE_CURRENT_LIST_DIR}/StudyChecks.cmake")
 cmake_policy(SET CMP0007 NEW) # keep the empty CSV cells when splitting a row into a list
 file(REMOVE_RECURSE "${OUT}")
-execute_process(COMMAND "${LBDEM}" study "${CASE}" --vary fluid.collision=bgk,mrt
-                        --vary flow.nodes=8,16 --out "${OUT}"
-                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 0)
-    message(FATAL_ERROR "study failed (${code}): ${out}${err}")
-endif()
+lbdem_run_ok(out "${LBDEM}" study "${CASE}" --vary fluid.collision=bgk,mrt --vary flow.nodes=8,16
+             --out "${OUT}")
 if(NOT out MATCHES "\\[4/4\\] fluid\\.collision=[a-z]+,flow\\.nodes=[0-9]+ finished in ")
     message(FATAL_ERROR "no progress line per finished run: ${out}")
 endif()

@@ -4,25 +4,14 @@
 file(REMOVE_RECURSE "${OUT}")
 set(small --set grains.count=150 --set run.end_tc=1 --set run.output_interval_tc=0.25)
 
-# Fails unless running the command exits with 0; its output goes to the variable named by out.
-function(run_ok out)
-    execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
-    if(NOT code EQUAL 0)
-        message(FATAL_ERROR "'${ARGN}' failed (${code}):\n${stdout}\n${stderr}")
-    endif()
-    set(${out} "${stdout}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/CommandChecks.cmake")
 
 # The first case stops at 0.5 tau_c, as if the sweep had been killed there.
-run_ok(ignored "${LBDEM}" run "${CASE}" --out "${OUT}/loose_0deg_dry" --until-tc 0.5 --quiet ${small})
-run_ok(first "${LBDEM}" sweep "${SWEEP}" --out "${OUT}" --jobs 2)
-foreach(expected "resume  loose_0deg_dry" "run     loose_5deg_dry" "loose_0deg_dry finished"
-                 "loose_5deg_dry finished" "wrote ${OUT}/sweep.csv" "wrote ${OUT}/sweep.md")
-    string(FIND "${first}" "${expected}" at)
-    if(at EQUAL -1)
-        message(FATAL_ERROR "the sweep did not print '${expected}':\n${first}")
-    endif()
-endforeach()
+lbdem_run_ok(ignored "${LBDEM}" run "${CASE}" --out "${OUT}/loose_0deg_dry" --until-tc 0.5 --quiet ${small})
+lbdem_run_ok(first "${LBDEM}" sweep "${SWEEP}" --out "${OUT}" --jobs 2)
+lbdem_expect_in("the sweep's output" "${first}" "resume  loose_0deg_dry" "run     loose_5deg_dry"
+                "loose_0deg_dry finished" "loose_5deg_dry finished" "wrote ${OUT}/sweep.csv"
+                "wrote ${OUT}/sweep.md")
 foreach(name loose_0deg_dry loose_5deg_dry)
     file(READ "${OUT}/${name}/summary.json" summary)
     if(NOT summary MATCHES "\"finished\": true")
@@ -41,7 +30,7 @@ if(NOT count EQUAL 3)
 endif()
 
 # A second sweep finds both cases finished and runs nothing.
-run_ok(second "${LBDEM}" sweep "${SWEEP}" --out "${OUT}" --jobs 2)
+lbdem_run_ok(second "${LBDEM}" sweep "${SWEEP}" --out "${OUT}" --jobs 2)
 foreach(name loose_0deg_dry loose_5deg_dry)
     string(FIND "${second}" "skip    ${name} (finished)" at)
     if(at EQUAL -1)

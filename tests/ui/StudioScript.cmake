@@ -2,6 +2,7 @@
 # --screenshot FILE --quit` exits 0 and writes a PNG. MODE=bad_case: a bad case file exits 2 with
 # one line naming the file, the line and the suggested key.
 # Usage: cmake -DSTUDIO=... -DCASE=... -DMODE=... [-DOUT=...] [-DARGS=...] -P StudioScript.cmake
+include("${CMAKE_CURRENT_LIST_DIR}/../support/CommandChecks.cmake")
 if(MODE STREQUAL "screenshot")
     file(REMOVE "${OUT}")
     execute_process(COMMAND "${STUDIO}" "${CASE}" ${ARGS} --run-steps 20 --screenshot "${OUT}" --quit
@@ -18,21 +19,9 @@ if(MODE STREQUAL "screenshot")
     endif()
     message(STATUS "ok: ${out}")
 elseif(MODE STREQUAL "bad_case")
-    execute_process(COMMAND "${STUDIO}" "${CASE}" --run-steps 1 --quit
-                    RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_VARIABLE out TIMEOUT 60)
     get_filename_component(name "${CASE}" NAME)
-    if(NOT code EQUAL 2)
-        message(FATAL_ERROR "expected exit code 2, got ${code}: ${err}")
-    endif()
-    if(NOT err MATCHES "${name}:5:" OR NOT err MATCHES "fluid\\.tau'")
-        message(FATAL_ERROR "message lacks file, line or suggested key: ${err}")
-    endif()
-    string(REGEX MATCHALL "\n" lines "${err}")
-    list(LENGTH lines count)
-    if(NOT count EQUAL 1)
-        message(FATAL_ERROR "expected one line, got ${count}: ${err}")
-    endif()
-    message(STATUS "ok: ${err}")
+    lbdem_expect_exit(2 MATCHES "${name}:5:" "fluid\\.tau'" TIMEOUT 60
+                      COMMAND "${STUDIO}" "${CASE}" --run-steps 1 --quit)
 else()
     message(FATAL_ERROR "unknown MODE '${MODE}'")
 endif()

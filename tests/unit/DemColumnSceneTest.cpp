@@ -1,5 +1,6 @@
 // Dry column-collapse scene: the gate opens at t = 0, the column spreads, snapshots are consistent.
 #include "solver/scene/ColumnScene.h"
+#include "tests/support/SmallDryColumn.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -28,17 +29,11 @@ void DemColumnSceneTest::gravityTiltsAndBuoys() {
 }
 
 void DemColumnSceneTest::columnCollapsesPastGate() {
-    CaseSpec spec = defaultCase();
-    spec.fluid.enabled = false;
+    CaseSpec spec = lbdem::support::smallDryColumn(0.82);
     spec.domain.slope_deg = 5;
-    spec.grains.count = 150;
-    spec.grains.packing = 0.82;
-    spec.run.threads = 1;
     QTemporaryDir dir;
-    lbdem::solver::dem::PackingOptions options;
-    options.cache_dir = dir.path().toStdString();
     const Plan plan = makePlan(spec);
-    ColumnScene scene(spec, plan, options);
+    ColumnScene scene(spec, plan, lbdem::support::packingIn(dir));
     QCOMPARE(scene.demTimeStep(), plan.dem_dt_s);
     QVERIFY(!scene.system().walls()[scene.gateWall()].active);
     QVERIFY(std::abs(scene.packing().fraction - 0.82) <= 0.005);

@@ -3,6 +3,7 @@
 #include "solver/dem/DemGuard.h"
 #include "solver/core/InputError.h"
 #include "solver/scene/ColumnScene.h"
+#include "tests/support/SmallDryColumn.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -72,17 +73,11 @@ void DemGuardTest::fastGrainStops() {
 void DemGuardTest::unstableColumnStopsNamingTheDem() {
     // A dry column stepped 30 times beyond the integrator's limit: before the guard, the grains'
     // coordinates overflowed and the neighbour grid crashed; now the run stops with a diagnosis.
-    CaseSpec spec = defaultCase();
-    spec.fluid.enabled = false;
-    spec.grains.count = 150;
-    spec.grains.packing = 0.79;
-    spec.run.threads = 1;
+    const CaseSpec spec = lbdem::support::smallDryColumn(0.79);
     QTemporaryDir dir;
-    dem::PackingOptions options;
-    options.cache_dir = dir.path().toStdString();
     Plan plan = makePlan(spec);
     plan.dem_dt_s = 30 * plan.dem_dt_stable_s;
-    ColumnScene scene(spec, plan, options);
+    ColumnScene scene(spec, plan, lbdem::support::packingIn(dir));
     try {
         for (int k = 0; k < 100000; ++k)
             scene.step();
