@@ -26,19 +26,6 @@ namespace {
 
 constexpr int kContourCount = 8;
 
-/// Array name and colour-bar title of each field.
-const char* arrayName(FluidField field) {
-    switch (field) {
-    case FluidField::Pressure:
-        return "pressure";
-    case FluidField::Vorticity:
-        return "vorticity";
-    case FluidField::Speed:
-        break;
-    }
-    return "speed";
-}
-
 const char* barTitle(FluidField field) {
     switch (field) {
     case FluidField::Pressure:
@@ -116,7 +103,9 @@ void FluidLayer::update(const solver::Snapshot& snapshot) {
     applyVisibility();
     if (!m_hasData) return;
     m_image->ShallowCopy(fluidToVtk(*snapshot.fluid));
-    const char* name = arrayName(m_field);
+    // The field's name is also its array name in the VTK image and its colour-bar title.
+    const std::string fieldName = fluidFieldName(m_field);
+    const char* name = fieldName.c_str();
     const bool signedField = m_field != FluidField::Speed;
     double low = m_range.min, high = m_range.max;
     if (!m_range.fixed) {
