@@ -110,6 +110,9 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
                                     const std::filesystem::path& out) {
     std::vector<SweepRun> runs;
     std::map<std::string, std::string> fileOfName;
+    // Without variants each case runs as it is: one variant with no name and no overrides.
+    const auto variants =
+        sweep.variants.empty() ? std::vector<io::SweepVariant>{{}} : sweep.variants;
     for (const auto& casePath : sweep.cases) {
         auto spec = io::loadCase(casePath, sweep.overrides);
         (void)solver::makePlan(spec); // the planner's refusals come before anything runs too
@@ -119,16 +122,25 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
                                      "' is also that of " + first->second +
                                      "; each case of a sweep needs its own name (it names "
                                      "the output folder)");
-        if (seeds.empty()) {
-            runs.push_back({{spec, out / spec.name, 0}, casePath, sweep.overrides});
-            continue;
-        }
-        for (const int seed : seeds) {
+        for (const auto& variant : variants) {
             auto overrides = sweep.overrides;
-            overrides.push_back("grains.seed=" + std::to_string(seed));
-            auto spec = io::loadCase(casePath, overrides);
-            const std::string folder = spec.name + "_s" + std::to_string(seed);
-            runs.push_back({{spec, out / folder, seed}, casePath, overrides});
+            overrides.insert(overrides.end(), variant.overrides.begin(), variant.overrides.end());
+            if (!variant.name.empty())
+                overrides.push_back("name=" + spec.name + "__" + variant.name);
+            const auto variantSpec = io::loadCase(casePath, overrides);
+            if (!variant.name.empty()) (void)solver::makePlan(variantSpec);
+            if (seeds.empty()) {
+                runs.push_back(
+                    {{variantSpec, out / variantSpec.name, 0, variant.name}, casePath, overrides});
+                continue;
+            }
+            for (const int seed : seeds) {
+                auto seeded = overrides;
+                seeded.push_back("grains.seed=" + std::to_string(seed));
+                const auto seededSpec = io::loadCase(casePath, seeded);
+                const std::string folder = seededSpec.name + "_s" + std::to_string(seed);
+                runs.push_back({{seededSpec, out / folder, seed, variant.name}, casePath, seeded});
+            }
         }
     }
     return runs;
@@ -190,7 +202,8 @@ std::vector<EnsembleCase> gatherEnsemble(const std::vector<SweepEntry>& entries)
                              0,
                              0,
                              0,
-                             {}});
+                             {},
+                             entry.variant});
         auto& c = cases[at->second];
         c.runs.push_back(readRun(entry));
         c.finished += c.runs.back().status == "finished";

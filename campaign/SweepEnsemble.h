@@ -23,8 +23,9 @@ struct SweepRun {
 /// Seeds 1, 2, ..., count (`lbdem sweep --seeds N`).
 std::vector<int> firstSeeds(int count);
 
-/// Every run of the sweep, cases in order and each case's seeds in order: one run per case in
-/// OUT/NAME when `seeds` is empty, else one per seed in OUT/NAME_sK with grains.seed = K.
+/// Every run of the sweep, cases in order, then each case's variants, then seeds: one run per
+/// case in OUT/NAME when `seeds` is empty, else one per seed in OUT/NAME_sK with grains.seed = K;
+/// with variants NAME is CASE__VARIANT (the run's case name too).
 /// Loads and plans each case, and refuses two cases of one name (one output folder): throws
 /// InputError before anything runs.
 std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vector<int>& seeds,
@@ -71,6 +72,7 @@ struct EnsembleCase {
     std::vector<EnsembleRun> runs;
     int finished = 0, unstable = 0, endReached = 0; ///< how many runs (endReached: of the finished)
     std::array<Spread, kEnsembleMetrics> spread{};
+    std::string variant; ///< its variant in a controlled-experiment sweep; empty outside one
 };
 
 /// y at x = at, linear between the points (x increasing); NaN outside them or where y is not

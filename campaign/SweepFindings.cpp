@@ -164,7 +164,12 @@ std::string inWords(const Finding& f) {
 
 } // namespace
 
-std::vector<Finding> computeFindings(const std::vector<EnsembleCase>& cases) {
+std::vector<Finding> computeFindings(const std::vector<EnsembleCase>& allCases) {
+    // In a controlled-experiment sweep the findings are those of the reference (first) variant.
+    if (allCases.empty()) return {};
+    std::vector<EnsembleCase> cases;
+    for (const auto& c : allCases)
+        if (c.variant == allCases.front().variant) cases.push_back(c);
     const CaseIndex index(cases);
     std::vector<Finding> findings;
     const Kind denseDry{"dense", false}, denseWet{"dense", true}, looseDry{"loose", false},

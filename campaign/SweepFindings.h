@@ -23,7 +23,8 @@ struct Finding {
 
 /// The paper's findings (Kumar, Delenne & Soga, as listed in docs/paper.md) that the cases of
 /// the sweep allow, each compared seed by seed between runs of the same packing seed that both
-/// finished; a finding whose cases are not in the sweep is left out.
+/// finished; a finding whose cases are not in the sweep is left out. In a sweep with variants,
+/// only the first variant's cases count.
 std::vector<Finding> computeFindings(const std::vector<EnsembleCase>& cases);
 
 /// findings.csv and the Markdown table ("holds for k of n seeds").

@@ -14,7 +14,8 @@ namespace lbdem::campaign {
 struct SweepEntry {
     solver::CaseSpec spec = solver::defaultCase();
     std::filesystem::path dir;
-    int seed = 0; ///< the packing seed of an ensemble run; 0 outside an ensemble
+    int seed = 0;        ///< the packing seed of an ensemble run; 0 outside an ensemble
+    std::string variant; ///< the variant of a controlled-experiment sweep; empty outside one
 };
 
 /// The first line of a run's log that reports an error ("lbdem: ..."), or a note that the log

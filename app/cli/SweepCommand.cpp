@@ -81,8 +81,9 @@ std::vector<Job> jobsToRun(const std::vector<SweepRun>& runs, const SweepOptions
     const std::string self = selfExecutable();
     std::vector<Job> jobs;
     for (const auto& [entry, casePath, overrides] : runs) {
-        const auto& [spec, dir, seed] = entry;
-        const std::string label = dir.filename().string(); // the case, or the case and its seed
+        const auto& dir = entry.dir;
+        const std::string label = dir.filename().string(); // case, variant and seed
+
         Job job{label,
                 {self, "run", casePath, "--out", dir.string(), "--quiet"},
                 (dir / "log.txt").string()};

@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 namespace lbdem::io {
@@ -15,7 +16,8 @@ using solver::InputError;
 
 namespace {
 
-const std::vector<std::string> kSweepKeys{"sweep", "name", "cases", "set", "seeds"};
+const std::vector<std::string> kSweepKeys{"sweep", "name", "cases", "set", "seeds", "variants"};
+const std::vector<std::string> kVariantKeys{"name", "set"};
 
 std::vector<std::string> stringArray(const toml::node& node, const std::string& path,
                                      const std::string& key) {
@@ -49,6 +51,53 @@ std::vector<int> seedArray(const toml::node& node, const std::string& path,
         seeds.push_back(static_cast<int>(*value));
     }
     return seeds;
+}
+
+/// A variant's name: letters, digits, '_' and '-' (it becomes part of a folder name).
+bool isVariantName(const std::string& name) {
+    return !name.empty() && name.size() <= 64 &&
+           std::all_of(name.begin(), name.end(),
+                       [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
+}
+
+/// The `[[variants]]` array of tables: each with a distinct `name` and an optional `set`.
+std::vector<SweepVariant> variantArray(const toml::node& node, const std::string& path) {
+    const auto* array = node.as_array();
+    const int line = static_cast<int>(node.source().begin.line);
+    if (!array || array->empty() || !array->is_array_of_tables())
+        throw InputError(path, line, "variants",
+                         "expected [[variants]] tables, each with a name and a set array");
+    std::vector<SweepVariant> variants;
+    for (const auto& item : *array) {
+        const auto& table = *item.as_table();
+        const int at = static_cast<int>(item.source().begin.line);
+        SweepVariant variant;
+        for (const auto& [key, value] : table) {
+            const std::string name(key.str());
+            const int keyLine = static_cast<int>(key.source().begin.line);
+            if (name == "name") {
+                variant.name = value.value<std::string>().value_or("");
+                if (!isVariantName(variant.name))
+                    throw InputError(path, keyLine, "variants.name",
+                                     "expected 1-64 letters, digits, '_' or '-'");
+            } else if (name == "set") {
+                variant.overrides = stringArray(value, path, "variants.set");
+            } else {
+                const std::string nearest = solver::nearestWord(name, kVariantKeys);
+                throw InputError(path, keyLine, "variants." + name,
+                                 "unknown key" +
+                                     (nearest.empty() ? "" : "; did you mean '" + nearest + "'?"));
+            }
+        }
+        if (variant.name.empty())
+            throw InputError(path, at, "variants.name", "missing: each variant needs a name");
+        for (const auto& other : variants)
+            if (other.name == variant.name)
+                throw InputError(path, at, "variants.name",
+                                 "variant '" + variant.name + "' is listed twice");
+        variants.push_back(variant);
+    }
+    return variants;
 }
 
 } // namespace
@@ -86,6 +135,8 @@ SweepSpec loadSweep(const std::string& path) {
             sweep.overrides = stringArray(node, path, name);
         } else if (name == "seeds") {
             sweep.seeds = seedArray(node, path, name);
+        } else if (name == "variants") {
+            sweep.variants = variantArray(node, path);
         } else {
             const std::string nearest = solver::nearestWord(name, kSweepKeys);
             throw InputError(path, line, name,

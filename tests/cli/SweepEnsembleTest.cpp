@@ -16,6 +16,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -67,6 +68,7 @@ private slots:
     void initTestCase();
     void spreadAndInterpolation();
     void runsOfASweepWithSeeds();
+    void runsOfASweepWithVariants();
     void spreadPerCase();
     void findingsSeedBySeed();
     void reportFiles();
@@ -136,6 +138,51 @@ void SweepEnsembleTest::runsOfASweepWithSeeds() {
     QCOMPARE(single.size(), std::size_t(1));
     QCOMPARE(single[0].entry.dir.string(), std::string("/tmp/S/loose_0deg_dry"));
     QCOMPARE(single[0].entry.seed, 0);
+}
+
+void SweepEnsembleTest::runsOfASweepWithVariants() {
+    io::SweepSpec sweep;
+    sweep.cases = {LBDEM_SOURCE_DIR "/sample_cases/paper/loose_0deg_dry.toml",
+                   LBDEM_SOURCE_DIR "/sample_cases/paper/dense_0deg_dry.toml"};
+    sweep.overrides = {"grains.count=150", "grains.contact_torque=true"};
+    sweep.variants = {{"paper", {}}, {"no_torque", {"grains.contact_torque=false"}}};
+    const auto runs = campaign::planSweepRuns(sweep, campaign::firstSeeds(2), "/tmp/S");
+    // Case by case, each case's variants in order, each variant's seeds in order.
+    const std::vector<std::string> folders{
+        "loose_0deg_dry__paper_s1",     "loose_0deg_dry__paper_s2",
+        "loose_0deg_dry__no_torque_s1", "loose_0deg_dry__no_torque_s2",
+        "dense_0deg_dry__paper_s1",     "dense_0deg_dry__paper_s2",
+        "dense_0deg_dry__no_torque_s1", "dense_0deg_dry__no_torque_s2"};
+    QCOMPARE(runs.size(), folders.size());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        const auto& entry = runs[k].entry;
+        QCOMPARE(entry.dir.string(), "/tmp/S/" + folders[k]);
+        QCOMPARE(entry.variant, std::string(k % 4 < 2 ? "paper" : "no_torque"));
+        QCOMPARE(entry.spec.grains.contact_torque, k % 4 < 2);
+        QCOMPARE(entry.spec.grains.count, 150);
+        QCOMPARE(entry.seed, static_cast<int>(k % 2) + 1);
+        QCOMPARE(entry.spec.name + "_s" + std::to_string(entry.seed), folders[k]);
+        // The run is started with the case's name carrying the variant, so its own files agree.
+        QVERIFY(std::find(runs[k].overrides.begin(), runs[k].overrides.end(),
+                          "name=" + entry.spec.name) != runs[k].overrides.end());
+    }
+    // The findings are those of the first variant: the second only adds rows to the tables.
+    std::vector<campaign::SweepEntry> entries;
+    for (const auto& run : runs)
+        entries.push_back(run.entry);
+    auto cases = campaign::gatherEnsemble(entries);
+    QCOMPARE(cases.size(), std::size_t(4));
+    QCOMPARE(cases[1].variant, std::string("no_torque"));
+    for (auto& c : cases) { // every run "finished" with dense ending 0.01 denser than loose
+        for (auto& run : c.runs) {
+            run.status = "finished";
+            run.values.fill(c.packing);
+        }
+    }
+    const auto findings = campaign::computeFindings(cases);
+    for (const auto& finding : findings)
+        QCOMPARE(finding.seeds(), 2);
+    QVERIFY(!findings.empty());
 }
 
 void SweepEnsembleTest::spreadPerCase() {
