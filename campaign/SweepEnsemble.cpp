@@ -108,13 +108,10 @@ std::vector<int> firstSeeds(int count) {
 
 std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vector<int>& seeds,
                                     const std::filesystem::path& out) {
-    std::vector<SweepRun> runs;
     std::map<std::string, std::string> fileOfName;
-    // Without variants each case runs as it is: one variant with no name and no overrides.
-    const auto variants =
-        sweep.variants.empty() ? std::vector<io::SweepVariant>{{}} : sweep.variants;
+    std::vector<std::string> names; // each case's own name, in the sweep's order
     for (const auto& casePath : sweep.cases) {
-        auto spec = io::loadCase(casePath, sweep.overrides);
+        const auto spec = io::loadCase(casePath, sweep.overrides);
         (void)solver::makePlan(spec); // the planner's refusals come before anything runs too
         const auto [first, fresh] = fileOfName.emplace(spec.name, casePath);
         if (!fresh)
@@ -122,11 +119,19 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
                                      "' is also that of " + first->second +
                                      "; each case of a sweep needs its own name (it names "
                                      "the output folder)");
-        for (const auto& variant : variants) {
+        names.push_back(spec.name);
+    }
+    // Without variants each case runs as it is: one variant with no name and no overrides.
+    const auto variants =
+        sweep.variants.empty() ? std::vector<io::SweepVariant>{{}} : sweep.variants;
+    std::vector<SweepRun> runs;
+    for (const auto& variant : variants) {
+        for (std::size_t c = 0; c < sweep.cases.size(); ++c) {
+            const auto& casePath = sweep.cases[c];
             auto overrides = sweep.overrides;
             overrides.insert(overrides.end(), variant.overrides.begin(), variant.overrides.end());
             if (!variant.name.empty())
-                overrides.push_back("name=" + spec.name + "__" + variant.name);
+                overrides.push_back("name=" + names[c] + "__" + variant.name);
             const auto variantSpec = io::loadCase(casePath, overrides);
             if (!variant.name.empty()) (void)solver::makePlan(variantSpec);
             if (seeds.empty()) {

@@ -23,9 +23,9 @@ struct SweepRun {
 /// Seeds 1, 2, ..., count (`lbdem sweep --seeds N`).
 std::vector<int> firstSeeds(int count);
 
-/// Every run of the sweep, cases in order, then each case's variants, then seeds: one run per
-/// case in OUT/NAME when `seeds` is empty, else one per seed in OUT/NAME_sK with grains.seed = K;
-/// with variants NAME is CASE__VARIANT (the run's case name too).
+/// Every run of the sweep, variants in order (the reference first), then cases, then seeds: one
+/// run per case in OUT/NAME when `seeds` is empty, else one per seed in OUT/NAME_sK with
+/// grains.seed = K; with variants NAME is CASE__VARIANT (the run's case name too).
 /// Loads and plans each case, and refuses two cases of one name (one output folder): throws
 /// InputError before anything runs.
 std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vector<int>& seeds,

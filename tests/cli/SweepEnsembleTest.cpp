@@ -147,18 +147,18 @@ void SweepEnsembleTest::runsOfASweepWithVariants() {
     sweep.overrides = {"grains.count=150", "grains.contact_torque=true"};
     sweep.variants = {{"paper", {}}, {"no_torque", {"grains.contact_torque=false"}}};
     const auto runs = campaign::planSweepRuns(sweep, campaign::firstSeeds(2), "/tmp/S");
-    // Case by case, each case's variants in order, each variant's seeds in order.
+    // Variant by variant (the reference first), each variant's cases in order, then seeds.
     const std::vector<std::string> folders{
         "loose_0deg_dry__paper_s1",     "loose_0deg_dry__paper_s2",
-        "loose_0deg_dry__no_torque_s1", "loose_0deg_dry__no_torque_s2",
         "dense_0deg_dry__paper_s1",     "dense_0deg_dry__paper_s2",
+        "loose_0deg_dry__no_torque_s1", "loose_0deg_dry__no_torque_s2",
         "dense_0deg_dry__no_torque_s1", "dense_0deg_dry__no_torque_s2"};
     QCOMPARE(runs.size(), folders.size());
     for (std::size_t k = 0; k < runs.size(); ++k) {
         const auto& entry = runs[k].entry;
         QCOMPARE(entry.dir.string(), "/tmp/S/" + folders[k]);
-        QCOMPARE(entry.variant, std::string(k % 4 < 2 ? "paper" : "no_torque"));
-        QCOMPARE(entry.spec.grains.contact_torque, k % 4 < 2);
+        QCOMPARE(entry.variant, std::string(k < 4 ? "paper" : "no_torque"));
+        QCOMPARE(entry.spec.grains.contact_torque, k < 4);
         QCOMPARE(entry.spec.grains.count, 150);
         QCOMPARE(entry.seed, static_cast<int>(k % 2) + 1);
         QCOMPARE(entry.spec.name + "_s" + std::to_string(entry.seed), folders[k]);
@@ -172,7 +172,8 @@ void SweepEnsembleTest::runsOfASweepWithVariants() {
         entries.push_back(run.entry);
     auto cases = campaign::gatherEnsemble(entries);
     QCOMPARE(cases.size(), std::size_t(4));
-    QCOMPARE(cases[1].variant, std::string("no_torque"));
+    QCOMPARE(cases[1].variant, std::string("paper"));
+    QCOMPARE(cases[2].variant, std::string("no_torque"));
     for (auto& c : cases) { // every run "finished" with dense ending 0.01 denser than loose
         for (auto& run : c.runs) {
             run.status = "finished";
