@@ -25,23 +25,17 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct MetricText {
     const char* key;
     const char* heading;
+    const char* pattern; ///< printf pattern of its Markdown cells
 };
 constexpr MetricText kMetricText[kEnsembleMetrics] = {
-    {"runout_final", "(L_f - L_i)/L_i"},
-    {"ke_peak", "peak E_k/E_p0"},
-    {"t_ke_peak_over_tc", "t_peak/tau_c"},
-    {"runout_at_3tc", "(L - L_i)/L_i at 3 tau_c"},
-    {"froude_at_3tc", "Fr_d at 3 tau_c"},
-    {"packing_final", "final packing"},
-    {"pore_pressure_at_1tc_pa", "pore pressure on the failure plane at 1 tau_c (Pa)"},
+    {"runout_final", "(L_f - L_i)/L_i", "%.3f"},
+    {"ke_peak", "peak E_k/E_p0", "%.4f"},
+    {"t_ke_peak_over_tc", "t_peak/tau_c", "%.2f"},
+    {"runout_at_3tc", "(L - L_i)/L_i at 3 tau_c", "%.3f"},
+    {"froude_at_3tc", "Fr_d at 3 tau_c", "%.3f"},
+    {"packing_final", "final packing", "%.3f"},
+    {"pore_pressure_at_1tc_pa", "pore pressure on the failure plane at 1 tau_c (Pa)", "%.0f"},
 };
-
-std::string number(double value, const char* pattern) {
-    if (!std::isfinite(value)) return "";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, pattern, value);
-    return buffer;
-}
 
 double numberIn(const nlohmann::json& json, const char* key) {
     const auto found = json.find(key);
@@ -87,12 +81,7 @@ EnsembleRun readRun(const SweepEntry& entry) {
     return run;
 }
 
-/// "mean ± sd" (or the one value) and "min-max" of a spread for Markdown; "-" when empty.
-std::string meanCell(const Spread& s, const char* pattern) {
-    if (s.count == 0) return "-";
-    if (s.count == 1) return number(s.mean, pattern);
-    return number(s.mean, pattern) + " ± " + number(s.sd, pattern);
-}
+/// "min-max" of a spread for Markdown; "-" below two values.
 std::string rangeCell(const Spread& s, const char* pattern) {
     return s.count < 2 ? "-" : number(s.min, pattern) + "–" + number(s.max, pattern);
 }
@@ -151,12 +140,29 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
     return runs;
 }
 
+std::string number(double value, const char* pattern) {
+    if (!std::isfinite(value)) return "";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, pattern, value);
+    return buffer;
+}
+
+std::string meanCell(const Spread& s, const char* pattern) {
+    if (s.count == 0) return "-";
+    if (s.count == 1) return number(s.mean, pattern);
+    return number(s.mean, pattern) + " ± " + number(s.sd, pattern);
+}
+
 const char* metricKey(EnsembleMetric metric) {
     return kMetricText[static_cast<std::size_t>(metric)].key;
 }
 
 const char* metricHeading(EnsembleMetric metric) {
     return kMetricText[static_cast<std::size_t>(metric)].heading;
+}
+
+const char* metricPattern(EnsembleMetric metric) {
+    return kMetricText[static_cast<std::size_t>(metric)].pattern;
 }
 
 Spread spreadOf(const std::vector<double>& values) {
@@ -252,15 +258,14 @@ std::string ensembleMarkdown(const std::vector<EnsembleCase>& cases) {
         rule += "---|---|";
     }
     md += "\n" + rule + "\n";
-    const char* patterns[kEnsembleMetrics] = {"%.3f", "%.4f", "%.2f", "%.3f",
-                                              "%.3f", "%.3f", "%.0f"};
     for (const auto& c : cases) {
         md += "| " + c.name + " | " + std::to_string(c.runs.size()) + " | " +
               std::to_string(c.finished) + " | " + std::to_string(c.unstable) + " |";
         for (std::size_t m = 0; m < kEnsembleMetrics; ++m) {
-            std::string mean = meanCell(c.spread[m], patterns[m]);
+            const char* pattern = kMetricText[m].pattern;
+            std::string mean = meanCell(c.spread[m], pattern);
             if (m == 0 && c.endReached > 0) mean += " (end: " + std::to_string(c.endReached) + ")";
-            md += " " + mean + " | " + rangeCell(c.spread[m], patterns[m]) + " |";
+            md += " " + mean + " | " + rangeCell(c.spread[m], pattern) + " |";
         }
         md += "\n";
     }

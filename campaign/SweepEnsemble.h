@@ -44,9 +44,13 @@ enum class EnsembleMetric : std::size_t {
 };
 constexpr std::size_t kEnsembleMetrics = static_cast<std::size_t>(EnsembleMetric::Count);
 
-/// Column name (CSV) and heading (Markdown) of a metric.
+/// Column name (CSV), heading (Markdown) and printf pattern (Markdown cells) of a metric.
 const char* metricKey(EnsembleMetric metric);
 const char* metricHeading(EnsembleMetric metric);
+const char* metricPattern(EnsembleMetric metric);
+
+/// value printed with a printf pattern; "" when it is not finite.
+std::string number(double value, const char* pattern);
 
 /// Mean, sample standard deviation (NaN below two values), min and max of the finite values.
 struct Spread {
@@ -54,6 +58,9 @@ struct Spread {
     double mean = 0, sd = 0, min = 0, max = 0;
 };
 Spread spreadOf(const std::vector<double>& values);
+
+/// "mean ± sd", the one value of a single run, or "-" when no run gave one (Markdown cells).
+std::string meanCell(const Spread& s, const char* pattern);
 
 /// What one run of an ensemble left on disk.
 struct EnsembleRun {

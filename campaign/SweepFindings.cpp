@@ -2,6 +2,7 @@
 #include "campaign/SweepFindings.h"
 
 #include "campaign/SweepFigureCase.h"
+#include "campaign/SweepVariants.h"
 #include "solver/io/CaseWriter.h"
 
 #include <cmath>
@@ -237,22 +238,36 @@ std::string findingsMarkdown(const std::vector<Finding>& findings) {
 SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries,
                                         const std::filesystem::path& out) {
     SweepEnsembleReport report;
-    bool ensemble = false;
-    for (const auto& entry : entries)
+    bool ensemble = false, variants = false;
+    for (const auto& entry : entries) {
         ensemble = ensemble || entry.seed > 0;
-    if (!ensemble) return report;
+        variants = variants || !entry.variant.empty();
+    }
+    if (!ensemble && !variants) return report;
     const auto cases = gatherEnsemble(entries);
-    const auto findings = computeFindings(cases);
-    report.csv = ensembleCsv(cases);
-    io::writeFileAtomically((out / "sweep.csv").string(), report.csv);
-    io::writeFileAtomically((out / "findings.csv").string(), findingsCsv(findings));
-    report.files = {(out / "sweep.csv").string(), (out / "findings.csv").string()};
-    report.markdown =
-        "## Ensemble over packing seeds\n\nEach case over its seeds, from the runs that finished: "
-        "mean ± sample standard deviation, and min–max. \"(end: k)\": k fronts reached the "
-        "domain's end, so their runouts are lower bounds.\n\n" +
-        ensembleMarkdown(cases) + "\n## Findings\n\n" + findingsMarkdown(findings) +
-        "\n## Runs\n\n";
+    if (variants) {
+        io::writeFileAtomically((out / "variants.csv").string(), variantsCsv(cases));
+        report.files.push_back((out / "variants.csv").string());
+        report.markdown +=
+            "## Controlled experiments\n\nEach case under each variant; \"(xR)\": R times the "
+            "reference variant's value (the first, `" +
+            cases.front().variant + "`). \"finished\": runs finished of those planned.\n\n" +
+            variantsMarkdown(cases) + "\n";
+    }
+    if (ensemble) {
+        const auto findings = computeFindings(cases);
+        report.csv = ensembleCsv(cases);
+        io::writeFileAtomically((out / "sweep.csv").string(), report.csv);
+        io::writeFileAtomically((out / "findings.csv").string(), findingsCsv(findings));
+        report.files.push_back((out / "sweep.csv").string());
+        report.files.push_back((out / "findings.csv").string());
+        report.markdown +=
+            "## Ensemble over packing seeds\n\nEach case over its seeds, from the runs that "
+            "finished: mean ± sample standard deviation, and min–max. \"(end: k)\": k fronts "
+            "reached the domain's end, so their runouts are lower bounds.\n\n" +
+            ensembleMarkdown(cases) + "\n## Findings\n\n" + findingsMarkdown(findings) + "\n";
+    }
+    report.markdown += "## Runs\n\n";
     return report;
 }
 

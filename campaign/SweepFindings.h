@@ -31,15 +31,16 @@ std::vector<Finding> computeFindings(const std::vector<EnsembleCase>& cases);
 std::string findingsCsv(const std::vector<Finding>& findings);
 std::string findingsMarkdown(const std::vector<Finding>& findings);
 
-/// The ensemble parts of a sweep report; all empty for a sweep without seeds.
+/// The ensemble and variant parts of a sweep report; all empty for a sweep of single runs.
 struct SweepEnsembleReport {
-    std::string markdown;           ///< the spread and findings sections, then the runs' heading
-    std::string csv;                ///< the per-case table, written as OUT/sweep.csv
-    std::vector<std::string> files; ///< OUT/sweep.csv and OUT/findings.csv
+    std::string markdown; ///< the variants, spread and findings sections, then the runs' heading
+    std::string csv;      ///< the per-case spread table, written as OUT/sweep.csv (seeds only)
+    std::vector<std::string> files; ///< OUT/variants.csv, OUT/sweep.csv and OUT/findings.csv
 };
 
-/// When entries hold ensemble runs (a seed each): writes OUT/sweep.csv (spread per case) and
-/// OUT/findings.csv, and returns the Markdown of both.
+/// When entries hold variants: writes OUT/variants.csv (each variant against the reference);
+/// when they hold ensemble runs (a seed each): OUT/sweep.csv (spread per case) and
+/// OUT/findings.csv. Returns the Markdown of what it wrote.
 SweepEnsembleReport sweepEnsembleReport(const std::vector<SweepEntry>& entries,
                                         const std::filesystem::path& out);
 

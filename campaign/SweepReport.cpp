@@ -24,12 +24,6 @@ struct Row {
     SweepFigureCase figure; ///< what the figures need of this case
 };
 
-std::string number(double value, const char* pattern = "%.4g") {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, pattern, value);
-    return buffer;
-}
-
 double numberOr(const nlohmann::json& json, const char* key) {
     const auto found = json.find(key);
     return found != json.end() && found->is_number() ? found->get<double>() : 0.0;

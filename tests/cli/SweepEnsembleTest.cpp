@@ -3,6 +3,7 @@
 #include "campaign/SweepEnsemble.h"
 #include "campaign/SweepFindings.h"
 #include "campaign/SweepReport.h"
+#include "campaign/SweepVariants.h"
 #include "campaign/figures/SweepFigures.h"
 #include "solver/core/InputError.h"
 #include "tests/support/SyntheticSweep.h"
@@ -174,7 +175,11 @@ void SweepEnsembleTest::runsOfASweepWithVariants() {
     QCOMPARE(cases.size(), std::size_t(4));
     QCOMPARE(cases[1].variant, std::string("paper"));
     QCOMPARE(cases[2].variant, std::string("no_torque"));
-    for (auto& c : cases) { // every run "finished" with dense ending 0.01 denser than loose
+    for (auto& c : cases) { // every run finished; no_torque's figures twice the reference's
+        c.finished = static_cast<int>(c.runs.size());
+        for (std::size_t m = 0; m < campaign::kEnsembleMetrics; ++m)
+            c.spread[m] = campaign::spreadOf(
+                std::vector<double>(2, c.packing * (c.variant == "paper" ? 1 : 2)));
         for (auto& run : c.runs) {
             run.status = "finished";
             run.values.fill(c.packing);
@@ -184,6 +189,15 @@ void SweepEnsembleTest::runsOfASweepWithVariants() {
     for (const auto& finding : findings)
         QCOMPARE(finding.seeds(), 2);
     QVERIFY(!findings.empty());
+    // The controlled-experiment table: each variant against the reference of its own case.
+    QVERIFY(campaign::hasVariants(cases));
+    const std::string md = campaign::variantsMarkdown(cases);
+    QVERIFY(md.find("| loose_0deg_dry | paper | 2/2 | 0.7900 ± 0.0000 |") != std::string::npos);
+    QVERIFY(md.find("| dense_0deg_dry | no_torque | 2/2 | 1.6600 ± 0.0000 (x2.00) |") !=
+            std::string::npos);
+    const std::string csv = campaign::variantsCsv(cases);
+    QVERIFY(csv.rfind("case,variant,runs,finished,unstable,front_at_end,ke_peak,", 0) == 0);
+    QVERIFY(csv.find("\nloose_0deg_dry,no_torque,2,2,0,0,1.58,2,") != std::string::npos);
 }
 
 void SweepEnsembleTest::spreadPerCase() {
