@@ -33,6 +33,15 @@ struct CollisionParams {
     Real smagorinsky = 0.17; ///< Smagorinsky constant C (LES only)
 };
 
+/// Lambda = (tau - 1/2)(1/s_q - 1/2) at which straight bounce-back walls sit exactly half-way
+/// between nodes, whatever tau (Ginzburg & d'Humieres 2003).
+constexpr double kHalfWayLambda = 3.0 / 16.0;
+
+/// The MRT rate s_q that gives the "magic" parameter Lambda = (tau - 1/2)(1/s_q - 1/2) at tau.
+inline double sqForMagicLambda(double tau, double lambda) {
+    return 1.0 / (0.5 + lambda / (tau - 0.5));
+}
+
 template <bool kLes, bool kForce> struct MrtCollision;
 
 /// BGK: f_i <- f_i - (f_i - f_i^eq) / tau + (1 - 1/(2 tau)) S_i, Guo et al. (2002) source

@@ -40,6 +40,7 @@ struct FluidSpec {
     double s_e{};
     double s_eps{};
     double s_q{};
+    double magic_lambda{};
     lattice::PopulationStorage storage{};
 };
 

@@ -1,6 +1,8 @@
 // Lattice-to-SI field conversion for snapshots.
 #include "solver/scene/FluidFields.h"
 
+#include "solver/lattice/Collision.h"
+
 #include <algorithm>
 
 namespace lbdem::solver {
@@ -11,7 +13,8 @@ lattice::CollisionParams collisionOf(const CaseSpec& spec, double tau) {
     p.tau = tau;
     p.s_e = spec.fluid.s_e;
     p.s_eps = spec.fluid.s_eps;
-    p.s_q = spec.fluid.s_q;
+    p.s_q = spec.fluid.magic_lambda > 0 ? lattice::sqForMagicLambda(tau, spec.fluid.magic_lambda)
+                                        : spec.fluid.s_q;
     p.smagorinsky = spec.fluid.smagorinsky;
     return p;
 }

@@ -3,6 +3,7 @@
 #include "solver/verification/ColumnPermeability.h"
 #include "solver/verification/VerificationRunners.h"
 
+#include "solver/lattice/Collision.h"
 #include "solver/scene/ColumnScene.h"
 #include "solver/scene/FluidFields.h"
 
@@ -98,7 +99,7 @@ void diagnose(const CaseSpec& spec, const dem::Packing& packing,
     const lattice::CollisionParams run = collisionOf(spec, spec.fluid.tau);
     lattice::CollisionParams noLes = run, halfWay = run;
     noLes.model = lattice::CollisionModel::Mrt;
-    halfWay.s_q = 1 / (0.5 + (3.0 / 16) / (run.tau - 0.5));
+    halfWay.s_q = lattice::sqForMagicLambda(run.tau, lattice::kHalfWayLambda);
     const auto withLes = std::find_if(all.begin(), all.end(), [](const auto& p) {
         return p.packing == "dense" && p.method == "bounce_back" && p.resolution == 12;
     });

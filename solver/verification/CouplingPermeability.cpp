@@ -5,6 +5,7 @@
 
 #include "solver/core/InputError.h"
 #include "solver/dem/DemSystem.h"
+#include "solver/lattice/Collision.h"
 #include "solver/lattice/Lattice.h"
 
 #include <algorithm>
@@ -67,7 +68,7 @@ lattice::LatticeSetup permeabilityLattice(int side, Real tau, Real g) {
     s.left.type = s.right.type = s.bottom.type = s.top.type = lattice::SideType::Periodic;
     s.collision.model = lattice::CollisionModel::Mrt;
     s.collision.tau = tau;
-    s.collision.s_q = 1.0 / (0.5 + (3.0 / 16.0) / (tau - 0.5));
+    s.collision.s_q = lattice::sqForMagicLambda(tau, lattice::kHalfWayLambda);
     s.fx = g;
     return s;
 }

@@ -3,6 +3,7 @@
 #include "solver/verification/CouplingVerification.h"
 
 #include "solver/dem/DemSystem.h"
+#include "solver/lattice/Collision.h"
 #include "solver/lattice/Lattice.h"
 
 #include <chrono>
@@ -60,7 +61,7 @@ lattice::CollisionParams magicMrt(Real tau) {
     lattice::CollisionParams p;
     p.model = CollisionModel::Mrt;
     p.tau = tau;
-    p.s_q = 1.0 / (0.5 + (3.0 / 16.0) / (tau - 0.5));
+    p.s_q = lattice::sqForMagicLambda(tau, lattice::kHalfWayLambda);
     return p;
 }
 

@@ -3,6 +3,7 @@
 #include "solver/verification/VerificationRunners.h"
 
 #include "solver/core/InputError.h"
+#include "solver/lattice/Collision.h"
 #include "solver/scene/FlowScene.h"
 #include "solver/scene/Plan.h"
 
@@ -29,7 +30,7 @@ CaseSpec fluidCase(SceneKind scene, int nodes, lattice::CollisionModel collision
         // (Ginzburg & d'Humières 2003). Lambda = 1/6 keeps the wall close to that, with a
         // measurable second-order error left for the convergence study; s_q = 1.9 (the general
         // default, Lambda = 0.008) gives 5e-3 at 16 nodes.
-        c.fluid.s_q = 1.0 / (0.5 + (1.0 / 6.0) / (c.flow.tau - 0.5));
+        c.fluid.s_q = lattice::sqForMagicLambda(c.flow.tau, 1.0 / 6.0);
     } else if (scene == SceneKind::TaylorGreen) {
         c.domain.height_m = c.domain.width_m = 0.01; // one wavelength
         c.flow.reynolds = 10;
@@ -54,7 +55,7 @@ CaseSpec fluidCase(SceneKind scene, int nodes, lattice::CollisionModel collision
         c.flow.lattice_velocity = 0.05 * (20.0 / nodes) * (20.0 / nodes);
         const double tau =
             0.5 + 3.0 * (2.0 / 3.0) * c.flow.lattice_velocity * nodes / c.flow.reynolds;
-        c.fluid.s_q = 1.0 / (0.5 + (3.0 / 16.0) / (tau - 0.5));
+        c.fluid.s_q = lattice::sqForMagicLambda(tau, lattice::kHalfWayLambda);
     } else {
         throw InputError(std::string("no fluid verification case for scene '") + enumWord(scene) +
                          "'");

@@ -1,6 +1,7 @@
 // The case model: typed keys parsed from one word table per enum, defaults only in the schema,
 // and one relaxation-time rule and one set of stability warnings for every scene.
 #include "solver/scene/CaseSchema.h"
+#include "solver/scene/FluidFields.h"
 #include "solver/scene/FluidStability.h"
 #include "solver/scene/Plan.h"
 
@@ -17,6 +18,7 @@ private slots:
     void defaultCaseHoldsTheSchemaDefaults();
     void relaxationTimeImposedOrDerived();
     void oneTauWarningForEveryScene();
+    void magicLambdaSetsTheEnergyFluxRate();
 };
 
 namespace {
@@ -107,6 +109,20 @@ void CaseSchemaTest::oneTauWarningForEveryScene() {
     column.fluid.collision = cavity.fluid.collision = lattice::CollisionModel::MrtLes;
     QVERIFY(tauWarning(makePlan(column)).empty());
     QVERIFY(tauWarning(makePlan(cavity)).empty());
+}
+
+void CaseSchemaTest::magicLambdaSetsTheEnergyFluxRate() {
+    auto spec = defaultCase();
+    spec.fluid.s_q = 1.9;
+    QCOMPARE(collisionOf(spec, 0.503).s_q, 1.9); // 0: s_q as given
+    spec.fluid.magic_lambda = lattice::kHalfWayLambda;
+    for (const double tau : {0.503, 0.506, 0.8}) {
+        const double sq = collisionOf(spec, tau).s_q;
+        // Ginzburg & d'Humieres (2003): Lambda = (tau - 1/2)(1/s_q - 1/2) = 3/16 puts the wall
+        // half-way; the rate follows tau so that Lambda stays put.
+        QVERIFY(std::abs((tau - 0.5) * (1 / sq - 0.5) - 3.0 / 16) < 1e-12);
+    }
+    QVERIFY(std::abs(collisionOf(spec, 0.503).s_q - 0.0158730) < 1e-6); // as in sweep_controlled
 }
 
 QTEST_GUILESS_MAIN(CaseSchemaTest)
