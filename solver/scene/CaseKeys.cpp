@@ -45,7 +45,7 @@ void declareFluid(SectionKeys<FluidSpec> s) {
     s.real("s_e", &FluidSpec::s_e, 1.64, "-", 0, 2, "MRT relaxation rate of the energy moment e.");
     s.real("s_eps", &FluidSpec::s_eps, 1.54, "-", 0, 2, "MRT relaxation rate of the energy-squared moment.");
     s.real("s_q", &FluidSpec::s_q, 1.9, "-", 0, 2, "MRT relaxation rate of the energy-flux moments q.");
-    s.choice("storage", &FluidSpec::storage, lattice::PopulationStorage::Double, "Number format of the stored distributions; arithmetic is double either way. double: 8 B per value. float: 4 B, holding f_i - w_i (DDF shifting, Lehmann et al. 2022): half the memory and memory traffic (faster where the kernel is memory-bound), for a velocity ~1e-7 (relative) off double's.");
+    s.choice("storage", &FluidSpec::storage, lattice::PopulationStorage::Double, "Number format of the stored distributions and of the bulk collision. double: 8 B per value, collided in double. float: 4 B, holding f_i - w_i (DDF shifting, Lehmann et al. 2022), collided in float on those deviations (boundary, obstacle and grain passes stay in double): half the memory and memory traffic, faster where the kernel is memory-bound, for a velocity ~1e-7 (relative) off double's.");
 }
 
 void declareFlow(SectionKeys<FlowSpec> s) {
