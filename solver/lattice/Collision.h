@@ -123,17 +123,21 @@ template <bool kLes, bool kForce> struct MrtCollision {
     /// Collide the full populations f_i in double.
     LBDEM_KERNEL_INLINE void operator()(Real* f) const { apply<Real, false>(f); }
 
-    /// Collide in arithmetic T; kShifted: f holds f_i - w_i (see BgkCollision). The rest state's
-    /// moments are rho = 1, e = -2, eps = 1 and zero otherwise, so with shifted populations
-    /// e - e^eq = e' - (-2 rho' + 3 j^2/rho) and eps - eps^eq = eps' - (rho' - 3 j^2/rho) in the
-    /// shifted sums (primes) and rho' = rho - 1: the same expressions with the sum in place of rho.
+    /// Collide in arithmetic T; kShifted: f holds f_i - w_i (see BgkCollision).
     template <class T, bool kShifted> LBDEM_KERNEL_INLINE void apply(T* f) const {
-        // The parameters in T: no double arithmetic inside a float kernel.
+        if constexpr (kShifted)
+            shifted(f);
+        else
+            full(f);
+    }
+
+private:
+    /// The full populations, in the order of operations double storage has always used.
+    template <class T> LBDEM_KERNEL_INLINE void full(T* f) const {
         const T sNuT = T(sNu), sET = T(sE), sEpsT = T(sEps), sQT = T(sQ), tauT = T(tau),
                 c2x18T = T(c2x18);
         const T fxT = T(fx), fyT = T(fy);
-        const T sum =
-            f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8]; // rho, or rho - 1
+        const T sum = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8]; // rho
         const T sumAxis = f[1] + f[2] + f[3] + f[4];
         const T sumDiag = f[5] + f[6] + f[7] + f[8];
         const T e = -4 * f[0] - sumAxis + 2 * sumDiag;
@@ -149,7 +153,7 @@ template <bool kLes, bool kForce> struct MrtCollision {
             gx = T(0.5) * fxT;
             gy = T(0.5) * fyT;
         }
-        const T inv = T(1) / (kShifted ? 1 + sum : sum);
+        const T inv = T(1) / sum;
         const T px = jx + gx, py = jy + gy; // rho u
         const T j2 = (px * px + py * py) * inv;
         const T de = e - (-2 * sum + 3 * j2);
@@ -196,6 +200,68 @@ template <bool kLes, bool kForce> struct MrtCollision {
         f[6] += diag - cx - dx + cy + dy - s;
         f[7] += diag - cx - dx - cy - dy + s;
         f[8] += diag + cx + dx - cy - dy - s;
+    }
+
+    /// The deviations f_i - w_i (float storage), the operator of full() in fewer operations: the
+    /// moments from the sums and differences of opposite pairs, each rate folded with its row of
+    /// M^-1 into one factor, no arithmetic on an absent force. The rest state's moments are
+    /// rho = 1, e = -2, eps = 1 and zero otherwise, so in the shifted sums (primes), with
+    /// rho' = rho - 1: e - e^eq = e' + 2 rho' - 3 j^2/rho, eps - eps^eq = eps' - rho' + 3 j^2/rho.
+    template <class T> LBDEM_KERNEL_INLINE void shifted(T* f) const {
+        const T a13 = f[1] + f[3], d13 = f[1] - f[3], a24 = f[2] + f[4], d24 = f[2] - f[4];
+        const T a57 = f[5] + f[7], d57 = f[5] - f[7], a68 = f[6] + f[8], d68 = f[6] - f[8];
+        const T axis = a13 + a24, diag = a57 + a68, xDiag = d57 - d68, yDiag = d57 + d68;
+        const T sum = f[0] + axis + diag;     // rho - 1
+        T px = d13 + xDiag, py = d24 + yDiag; // rho u: j, plus F/2 under a force (Guo)
+        if constexpr (kForce) {
+            px += T(0.5 * fx);
+            py += T(0.5 * fy);
+        }
+        const T inv = 1 / (1 + sum), ux = px * inv, uy = py * inv;
+        const T xx = px * ux, yy = py * uy, j2 = xx + yy;
+        const T de = (2 * diag - axis - 4 * f[0]) + 2 * sum - 3 * j2; // e - e^eq
+        const T dEps = (4 * f[0] - 2 * axis + diag) - sum + 3 * j2;
+        const T dQx = (xDiag - 2 * d13) + px, dQy = (yDiag - 2 * d24) + py;
+        const T dPxx = (a13 - a24) - (xx - yy), dPxy = (a57 - a68) - px * uy;
+        T kP = T(-0.25 * sNu); // -s_nu / 4: the rate of pxx and pxy times their row of M^-1
+        if constexpr (kLes) {
+            // 2Q = 2 Pi_neq : Pi_neq = (de/3)^2 + dPxx^2 + 4 dPxy^2; s_nu / 4 = 1 / (2 (tau + R)).
+            const T de3 = de * T(1.0 / 3), twoQ = de3 * de3 + dPxx * dPxx + 4 * dPxy * dPxy;
+            const T r = std::sqrt(T(tau * tau) + T(c2x18) * std::sqrt(twoQ) * inv);
+            kP = T(-0.5) / (T(tau) + r);
+        }
+        // The relaxed moments, each times its row of M^-1: a, b of e, eps; x, y of qx, qy.
+        T a = T(-sE / 36) * de, b = T(-sEps / 36) * dEps;
+        T x = T(-sQ / 12) * dQx, y = T(-sQ / 12) * dQy, p = kP * dPxx, s = kP * dPxy;
+        T xAxis = -2 * x, yAxis = -2 * y; // the qx, qy share of the axis directions
+        if constexpr (kForce) {
+            // (I - S/2) M S^Guo: 6 u.F into e and -6 u.F into eps, F into j, -F into q,
+            // 2 (ux Fx - uy Fy) into pxx and ux Fy + uy Fx into pxy.
+            const T fxT = T(fx), fyT = T(fy), uf = ux * fxT + uy * fyT, kF = T(0.5) + kP;
+            a += T((1 - 0.5 * sE) / 6) * uf;
+            b -= T((1 - 0.5 * sEps) / 6) * uf;
+            x -= T((1 - 0.5 * sQ) / 12 * fx);
+            y -= T((1 - 0.5 * sQ) / 12 * fy);
+            xAxis = T(fx / 6) - 2 * x;
+            yAxis = T(fy / 6) - 2 * y;
+            x += T(fx / 6);
+            y += T(fy / 6);
+            p += kF * (ux * fxT - uy * fyT);
+            s += T(0.5) * kF * (ux * fyT + uy * fxT);
+        }
+        // f += M^T D dm, grouped by opposite pairs.
+        const T axisE = -a - 2 * b, diagE = 2 * a + b;
+        const T axisP = axisE + p, axisM = axisE - p, diagP = diagE + s, diagM = diagE - s;
+        const T xPlusY = x + y, xMinusY = x - y;
+        f[0] += 4 * (b - a);
+        f[1] += axisP + xAxis;
+        f[3] += axisP - xAxis;
+        f[2] += axisM + yAxis;
+        f[4] += axisM - yAxis;
+        f[5] += diagP + xPlusY;
+        f[7] += diagP - xPlusY;
+        f[6] += diagM - xMinusY;
+        f[8] += diagM + xMinusY;
     }
 };
 
