@@ -119,21 +119,36 @@ void draw(vis::ChartSpec spec, const std::filesystem::path& out, const std::stri
     result.files.push_back((out / file).string());
 }
 
-/// Runout and E_k/E_p0 against t/tau_c for the cases of one packing.
+/// The variant of a case of a sweep with variants (its name after "__"); empty otherwise.
+std::string variantOf(const SweepFigureCase& run) {
+    const auto cut = run.name.rfind("__");
+    return cut == std::string::npos ? std::string() : run.name.substr(cut + 2);
+}
+
+/// Runout and E_k/E_p0 against t/tau_c for the cases of one packing: one colour per slope, or in
+/// a sweep with variants one colour and legend entry per variant.
 void drawPackingFigures(const std::string& sweepName, const std::string& packing,
                         const std::string& label, const std::vector<const CaseCurves*>& cases,
                         const std::map<double, int>& colours, const std::string& band,
                         const std::filesystem::path& out, SweepFiguresResult& result) {
     std::vector<vis::ChartSeries> runout, energy;
+    std::map<std::string, int> variantColours; // in the order the variants come
     for (const auto* c : cases) {
+        const std::string variant = variantOf(*c->run);
+        const auto [at, fresh] =
+            variantColours.emplace(variant, static_cast<int>(variantColours.size()));
+        (void)fresh;
         const std::string name = std::string(c->run->submerged ? "submerged" : "dry") + ", " +
-                                 slopeText(c->run->slope_deg);
+                                 slopeText(c->run->slope_deg) +
+                                 (variant.empty() ? "" : ", " + variant);
         for (auto [series, column] :
              {std::pair{&runout, "runout_normalised"}, std::pair{&energy, "ke_over_ep0"}}) {
             series->push_back(curve(*c, column, name));
-            series->back().colour = colours.at(c->run->slope_deg);
-            series->back().style =
-                c->run->submerged ? vis::LineStyle::Dashed : vis::LineStyle::Solid;
+            series->back().colour = variant.empty() ? colours.at(c->run->slope_deg) : at->second;
+            // Dashed marks the submerged cases; with variants it marks the ninth colour on, as
+            // the palette's eight colours come round again.
+            const bool dashed = variant.empty() ? c->run->submerged : at->second >= 8;
+            series->back().style = dashed ? vis::LineStyle::Dashed : vis::LineStyle::Solid;
         }
     }
     nameFirstBand(runout, band);
