@@ -83,7 +83,6 @@ std::vector<Job> jobsToRun(const std::vector<SweepRun>& runs, const SweepOptions
     for (const auto& [entry, casePath, overrides] : runs) {
         const auto& dir = entry.dir;
         const std::string label = dir.filename().string(); // case, variant and seed
-
         Job job{label,
                 {self, "run", casePath, "--out", dir.string(), "--quiet"},
                 (dir / "log.txt").string()};
