@@ -98,7 +98,7 @@ std::vector<int> firstSeeds(int count) {
 std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vector<int>& seeds,
                                     const std::filesystem::path& out) {
     std::map<std::string, std::string> fileOfName;
-    std::vector<std::string> names; // each case's own name, in the sweep's order
+    std::vector<solver::CaseSpec> specs; // each case as the sweep's `set` leaves it, in order
     for (const auto& casePath : sweep.cases) {
         const auto spec = io::loadCase(casePath, sweep.overrides);
         (void)solver::makePlan(spec); // the planner's refusals come before anything runs too
@@ -108,7 +108,7 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
                                      "' is also that of " + first->second +
                                      "; each case of a sweep needs its own name (it names "
                                      "the output folder)");
-        names.push_back(spec.name);
+        specs.push_back(spec);
     }
     // Without variants each case runs as it is: one variant with no name and no overrides.
     const auto variants =
@@ -119,10 +119,12 @@ std::vector<SweepRun> planSweepRuns(const io::SweepSpec& sweep, const std::vecto
             const auto& casePath = sweep.cases[c];
             auto overrides = sweep.overrides;
             overrides.insert(overrides.end(), variant.overrides.begin(), variant.overrides.end());
-            if (!variant.name.empty())
-                overrides.push_back("name=" + names[c] + "__" + variant.name);
-            const auto variantSpec = io::loadCase(casePath, overrides);
-            if (!variant.name.empty()) (void)solver::makePlan(variantSpec);
+            auto variantSpec = specs[c];
+            if (!variant.name.empty()) { // the variant's own case, checked by the planner too
+                overrides.push_back("name=" + specs[c].name + "__" + variant.name);
+                variantSpec = io::loadCase(casePath, overrides);
+                (void)solver::makePlan(variantSpec);
+            }
             if (seeds.empty()) {
                 runs.push_back(
                     {{variantSpec, out / variantSpec.name, 0, variant.name}, casePath, overrides});

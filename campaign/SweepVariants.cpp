@@ -49,12 +49,6 @@ std::string status(const EnsembleCase& c) {
 
 } // namespace
 
-bool hasVariants(const std::vector<EnsembleCase>& cases) {
-    for (const auto& c : cases)
-        if (!c.variant.empty()) return true;
-    return false;
-}
-
 std::string variantsMarkdown(const std::vector<EnsembleCase>& cases) {
     std::string md = "| case | variant | finished |";
     std::string rule = "|---|---|---|";

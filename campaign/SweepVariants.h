@@ -9,9 +9,6 @@
 
 namespace lbdem::campaign {
 
-/// Whether the cases come from a sweep with variants.
-bool hasVariants(const std::vector<EnsembleCase>& cases);
-
 /// Per case (the name before "__"), a row per variant: status, then each metric (mean ± sd over
 /// seeds, or the one value) and, where both are finite and the reference's is not zero, its
 /// ratio to the reference variant's ("x1.23"). CSV: the values and ratios, one row per variant.
