@@ -1,6 +1,7 @@
 // The bulk stream-collide kernel against the collision operator applied node by node.
 #include "solver/lattice/Collision.h"
 #include "solver/lattice/Lattice.h"
+#include "tests/support/CollisionModelRows.h"
 
 #include <QtTest>
 #include <cmath>
@@ -17,13 +18,7 @@ private slots:
 };
 
 void LatticeKernelTest::eachNodeCollidesAsTheOperatorAlone_data() {
-    QTest::addColumn<int>("model");
-    QTest::addColumn<double>("force");
-    for (auto model : {CollisionModel::Bgk, CollisionModel::Mrt, CollisionModel::MrtLes})
-        for (double force : {0.0, 2e-3}) {
-            const std::string name = std::string(enumWord(model)) + (force ? ", forced" : "");
-            QTest::newRow(name.c_str()) << int(model) << force;
-        }
+    lbdem::support::addCollisionModelRows();
 }
 
 void LatticeKernelTest::eachNodeCollidesAsTheOperatorAlone() {

@@ -3,6 +3,7 @@
 #include "solver/core/InputError.h"
 #include "solver/lattice/Lattice.h"
 #include "solver/lattice/StabilityGuard.h"
+#include "tests/support/CollisionModelRows.h"
 
 #include <QtTest>
 #include <cmath>
@@ -173,13 +174,7 @@ void LatticeStorageTest::taylorGreenFloatMatchesDouble() {
 }
 
 void LatticeStorageTest::floatKernelMatchesDoubleEveryStep_data() {
-    QTest::addColumn<int>("model");
-    QTest::addColumn<double>("force");
-    for (auto model : {CollisionModel::Bgk, CollisionModel::Mrt, CollisionModel::MrtLes})
-        for (double force : {0.0, 2e-3}) {
-            const std::string name = std::string(enumWord(model)) + (force ? ", forced" : "");
-            QTest::newRow(name.c_str()) << int(model) << force;
-        }
+    lbdem::support::addCollisionModelRows();
 }
 
 void LatticeStorageTest::floatKernelMatchesDoubleEveryStep() {
