@@ -72,7 +72,8 @@ std::string formatPlan(const solver::Plan& plan) {
     line("memory", "%.1f", plan.memory_bytes / 1048576.0, "MiB (estimate)");
     line("outputs", "%.1f", plan.output_bytes / 1048576.0,
          "MiB (upper bound, all files of the run)");
-    line("estimated run time", "%.0f", plan.estimated_run_s, "s");
+    line("estimated run time", "%.0f", plan.estimated_run_s,
+         "s (rough, from assumed throughputs; lbdem bench --case measures)");
     for (const auto& note : plan.notes)
         text += "note: " + note + "\n";
     for (const auto& warning : plan.warnings)
