@@ -6,6 +6,7 @@
 #include "solver/dem/DemGuard.h"
 #include "solver/diagnostics/MassDiagnostics.h"
 #include "solver/lattice/AbsorbingLayer.h"
+#include "solver/lattice/FluidMotion.h"
 #include "solver/lattice/StabilityGuard.h"
 #include "solver/scene/ColumnScene.h"
 #include "solver/scene/ColumnState.h"
@@ -163,7 +164,9 @@ public:
         if (m_lattice) {
             m["froude_densimetric"] = d.froude_densimetric;
             m["pore_pressure_failure_plane_pa"] = failurePlanePressure();
-            m["far_field_speed_ratio"] = farFieldSpeedRatio();
+            const FarFieldRatios farField = farFieldRatios();
+            m["far_field_speed_ratio"] = farField.speed;
+            m["far_field_acoustic_ratio"] = farField.acoustic;
         }
     }
 
@@ -272,40 +275,44 @@ private:
         return samples ? sum / samples : 0.0;
     }
 
-    /// Acoustic noise measure: rms fluid speed over the fluid nodes farther than kFarFieldWidths
-    /// initial column widths from the initial column (outside the absorbing layer, which damps
-    /// by design) over the mean speed of the main mass's grains; 0 while the mass is at rest.
-    double farFieldSpeedRatio() const {
+    /// Far-field motion over the main mass's mean grain speed (both 0 while the mass is at rest).
+    struct FarFieldRatios {
+        double speed = 0;    ///< rms fluid speed
+        double acoustic = 0; ///< rms acoustic speed (lattice::MotionRms::acoustic)
+    };
+
+    /// Acoustic noise measure over the fluid nodes farther than kFarFieldWidths initial column
+    /// widths from the initial column, outside the absorbing layer (which damps by design).
+    FarFieldRatios farFieldRatios() const {
         std::vector<char> inLayer(static_cast<std::size_t>(m_lattice->cells()), 0);
         for (std::size_t k = 0; k < m_layer->nodeCount(); ++k)
             inLayer[m_layer->cellAt(k)] = 1;
         const double width = m_column.initialWidth(), height = m_column.initialHeight();
-        const double reach = kFarFieldWidths * width, velocityScale = m_plan.h_m / m_plan.dt_s;
-        double sum = 0;
-        long long nodes = 0;
+        const double reach = kFarFieldWidths * width;
+        std::vector<long long> farCells;
         for (int j = 0; j < m_plan.ny; ++j)
             for (int i = 0; i < m_plan.nx; ++i) {
                 const double x = (i + 0.5) * m_plan.h_m, y = (j + 0.5) * m_plan.h_m;
                 const double dx = std::max(x - width, 0.0), dy = std::max(y - height, 0.0);
                 const long long cell =
                     m_lattice->index(m_lattice->firstFluidX() + i, m_lattice->firstFluidY() + j);
-                if (dx * dx + dy * dy <= reach * reach || inLayer[cell] ||
-                    !m_lattice->isFluid(cell))
-                    continue;
-                double ux, uy;
-                m_lattice->velocity(cell, ux, uy);
-                sum += (ux * ux + uy * uy) * velocityScale * velocityScale;
-                ++nodes;
+                if (dx * dx + dy * dy > reach * reach && !inLayer[cell] &&
+                    m_lattice->isFluid(cell))
+                    farCells.push_back(cell);
             }
         const auto& p = m_column.system().particles();
         const std::vector<bool> main =
             mainMass(viewOf(p), m_params.contact_gap_m, m_params.bridge_gap_m);
-        double speed = 0;
+        double grainSpeed = 0;
         std::size_t grains = 0;
         for (std::size_t k = 0; k < p.size(); ++k)
-            if (main[k]) speed += std::hypot(p.vx[k], p.vy[k]), ++grains;
-        speed = grains ? speed / grains : 0;
-        return nodes && speed > 0 ? std::sqrt(sum / nodes) / speed : 0.0;
+            if (main[k]) grainSpeed += std::hypot(p.vx[k], p.vy[k]), ++grains;
+        grainSpeed = grains ? grainSpeed / grains : 0;
+        if (farCells.empty() || grainSpeed <= 0) return {};
+        const lattice::MotionRms motion = lattice::motionRms(*m_lattice, farCells);
+        const double velocityScale = m_plan.h_m / m_plan.dt_s;
+        return {motion.speed * velocityScale / grainSpeed,
+                motion.acoustic * velocityScale / grainSpeed};
     }
 
     CaseSpec m_spec;
