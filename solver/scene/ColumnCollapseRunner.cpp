@@ -296,8 +296,7 @@ private:
                 const double dx = std::max(x - width, 0.0), dy = std::max(y - height, 0.0);
                 const long long cell =
                     m_lattice->index(m_lattice->firstFluidX() + i, m_lattice->firstFluidY() + j);
-                if (dx * dx + dy * dy > reach * reach && !inLayer[cell] &&
-                    m_lattice->isFluid(cell))
+                if (dx * dx + dy * dy > reach * reach && !inLayer[cell] && m_lattice->isFluid(cell))
                     farCells.push_back(cell);
             }
         const auto& p = m_column.system().particles();

@@ -1,8 +1,8 @@
 // motionRms tells sound from incompressible flow: a plane sound wave carries u = c_s rho'/rho_0
 // (linear acoustics), so its acoustic speed equals its speed; a shear wave carries no density
 // excess to first order, so its acoustic speed is a small fraction of its speed.
-#include "solver/lattice/FluidMotion.h"
 #include "solver/lattice/D2Q9.h"
+#include "solver/lattice/FluidMotion.h"
 #include "solver/lattice/Lattice.h"
 
 #include <QtTest>
