@@ -17,6 +17,8 @@ nlohmann::json planToJson(const solver::Plan& plan) {
         {"nu_lattice", plan.nu_lattice},
         {"u_expected_m_s", plan.u_expected_m_s},
         {"mach", plan.mach},
+        {"sound_speed_m_s", plan.sound_speed_m_s},
+        {"bulk_modulus_pa", plan.bulk_modulus_pa},
         {"dem_dt_s", plan.dem_dt_s},
         {"dem_dt_safe_s", plan.dem_dt_safe_s},
         {"dem_dt_stable_s", plan.dem_dt_stable_s},
@@ -56,6 +58,8 @@ std::string formatPlan(const solver::Plan& plan) {
         line("lattice viscosity", "%.4g", plan.nu_lattice, "lattice units");
         line("expected velocity", "%.4g", plan.u_expected_m_s, "m/s");
         line("expected Mach", "%.4g", plan.mach, "");
+        line("sound speed", "%.4g", plan.sound_speed_m_s, "m/s (lattice; water 1480)");
+        line("bulk modulus", "%.4g", plan.bulk_modulus_pa, "Pa (rho_f c_s^2; water 2.2e9)");
         line("DEM sub-steps", "%.0f", plan.substeps, "per fluid step");
         line("absorbing layer", "%.0f", plan.absorbing_layer_nodes, "nodes");
     }

@@ -85,6 +85,7 @@ void planFlow(const CaseSpec& spec, Plan& plan) {
     plan.nu_lattice = s.nu_lattice;
     plan.u_expected_m_s = s.u_peak * s.h_m / s.dt_s;
     plan.mach = s.u_peak / kSoundSpeed;
+    planSoundSpeed(spec.fluid.density_kg_m3, plan);
     plan.substeps = 1;
     plan.steps = s.steps;
     plan.end_time_s = static_cast<double>(s.steps) * s.dt_s;

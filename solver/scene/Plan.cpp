@@ -139,6 +139,7 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
     plan.tau = relaxationTime(f.tau, f.viscosity_m2_s, plan.dt_s, plan.h_m);
     plan.nu_lattice = (plan.tau - 0.5) / 3.0;
     plan.mach = plan.u_expected_m_s * plan.dt_s / plan.h_m / kSoundSpeed;
+    planSoundSpeed(f.density_kg_m3, plan);
     const double needed = std::floor(plan.dt_s / plan.dem_dt_safe_s) + 1;
     if (plan.has_grains && spec.coupling.substeps == 0 && !(needed <= kMaxSubsteps))
         throw InputError(
@@ -191,6 +192,11 @@ void planDomain(const CaseSpec& spec, Plan& plan) {
 }
 
 } // namespace
+
+void planSoundSpeed(double fluidDensity, Plan& plan) {
+    plan.sound_speed_m_s = kSoundSpeed * plan.h_m / plan.dt_s;
+    plan.bulk_modulus_pa = fluidDensity * plan.sound_speed_m_s * plan.sound_speed_m_s;
+}
 
 double stableDemStep(double stiffness, double effectiveMass, double restitution) {
     const double omega = std::sqrt(stiffness / effectiveMass);

@@ -31,6 +31,8 @@ struct Plan {
     double nu_lattice = 0;      ///< lattice viscosity (tau - 1/2) / 3
     double u_expected_m_s = 0;  ///< the velocity scale the Mach number refers to
     double mach = 0;            ///< u_expected dt / h / c_s
+    double sound_speed_m_s = 0; ///< the lattice's sound speed c_s h / dt = h / (sqrt(3) dt)
+    double bulk_modulus_pa = 0; ///< the lattice fluid's bulk modulus rho_f c_s^2 (water: 2.2 GPa)
     double dem_dt_s = 0;        ///< DEM time step the run uses (dt_s / substeps when coupled)
     double dem_dt_safe_s = 0;   ///< grains.dt_safety times the shortest contact duration
     double dem_dt_stable_s = 0; ///< stability limit of the explicit DEM integrator (packed grains)
@@ -50,6 +52,9 @@ struct Plan {
     std::vector<std::string> notes;    ///< sentences on choices the plan made, and why
     std::vector<std::string> warnings; ///< sentences about stability or accuracy risks
 };
+
+/// Set plan's lattice sound speed and bulk modulus from its h and dt and the fluid's density.
+void planSoundSpeed(double fluidDensity, Plan& plan);
 
 /// Compute the plan of a validated case. Throws InputError naming coupling.substeps when the
 /// DEM step it gives is beyond the stability limit of the integrator.

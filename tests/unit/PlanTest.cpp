@@ -35,6 +35,9 @@ void PlanTest::paperTimeStepFromTau() {
     QCOMPARE(plan.ny, 1000);
     QVERIFY(std::abs(plan.dt_s - 2e-5) < 1e-12);
     QVERIFY(std::abs(plan.nu_lattice - 0.002) < 1e-12);
+    // c_s = h / (sqrt(3) dt) = 1e-4 / (sqrt(3) 2e-5) = 2.887 m/s; K = rho_f c_s^2 = 1000 * 25/3.
+    QVERIFY(std::abs(plan.sound_speed_m_s - 5.0 / std::sqrt(3.0)) < 1e-9);
+    QVERIFY(std::abs(plan.bulk_modulus_pa - spec.fluid.density_kg_m3 * 25.0 / 3.0) < 1e-6);
 }
 
 void PlanTest::tauFromMach() {
