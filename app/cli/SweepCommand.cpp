@@ -9,6 +9,7 @@
 #include "campaign/SweepReport.h"
 #include "campaign/SweepSlurm.h"
 #include "campaign/figures/SweepFigures.h"
+#include "solver/core/InputError.h"
 #include "solver/io/SweepFile.h"
 
 #include <CLI/CLI.hpp>
@@ -112,6 +113,10 @@ int runSweep(const SweepOptions& options) {
         entries.push_back(run.entry);
     if (options.slurm) return submitToSlurm(sweep, runs, options);
     if (options.report) {
+        if (!fs::is_directory(out))
+            throw solver::InputError("--out " + options.out +
+                                     " is not a folder: there is nothing to gather (run the "
+                                     "sweep into it first)");
         report(sweep.name, entries, options);
         return kExitOk;
     }

@@ -59,4 +59,12 @@ variant_refused("[[variants]]\nname = \"a\"\n[[variants]]\nname = \"a\"\n" "swee
 variant_refused("[[variants]]\nname = \"a\"\nsett = []\n" "sweep.toml:5.*variants.sett.*did you mean 'set'")
 variant_refused("variants = 3\n" "sweep.toml:3.*variants")
 variant_refused("[[variants]]\nname = \"a\"\nset = [\"grains.cuont=3\"]\n" "cuont")
+# --report gathers from a folder that exists; a missing one is bad input, and nothing is created.
+file(WRITE "${OUT}/sweep.toml" "sweep = 1\ncases = [\"good.toml\"]\n")
+execute_process(COMMAND "${LBDEM}" sweep "${OUT}/sweep.toml" --out "${OUT}/absent" --report
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+if(NOT code EQUAL 2 OR NOT err MATCHES "--out .*absent is not a folder: there is nothing to gather"
+   OR EXISTS "${OUT}/absent")
+    message(FATAL_ERROR "--report on a missing folder must be refused as bad input (${code}):\n${out}${err}")
+endif()
 message(STATUS "ok: sweep refusals and failures")
