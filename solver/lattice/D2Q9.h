@@ -15,6 +15,8 @@ constexpr double kW[kQ] = {4.0 / 9,  1.0 / 9,  1.0 / 9,  1.0 / 9, 1.0 / 9,
                            1.0 / 36, 1.0 / 36, 1.0 / 36, 1.0 / 36};
 /// Squared lattice speed of sound c_s^2 = 1/3.
 constexpr double kCs2 = 1.0 / 3.0;
+/// Lattice speed of sound c_s = 1/sqrt(3), the root of kCs2.
+constexpr double kCs = 0.57735026918962576;
 
 /// Lattices smaller than this run their loops on one thread: a parallel region and its
 /// barrier cost microseconds, and on a shared, oversubscribed machine a descheduled thread

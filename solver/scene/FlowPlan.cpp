@@ -12,7 +12,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kSoundSpeed = 0.57735026918962576;
 // Schäfer & Turek (1996) 2D-1: channel height H = 4.1 D; Re uses the mean inflow 2/3 U_max.
 constexpr double kCylinderHeightOverD = 4.1;
 constexpr double kMeanOverPeakInflow = 2.0 / 3.0;
@@ -84,8 +83,7 @@ void planFlow(const CaseSpec& spec, Plan& plan) {
     plan.tau = s.tau;
     plan.nu_lattice = s.nu_lattice;
     plan.u_expected_m_s = s.u_peak * s.h_m / s.dt_s;
-    plan.mach = s.u_peak / kSoundSpeed;
-    planSoundSpeed(spec.fluid.density_kg_m3, plan);
+    planAcoustics(spec.fluid.density_kg_m3, plan);
     plan.substeps = 1;
     plan.steps = s.steps;
     plan.end_time_s = static_cast<double>(s.steps) * s.dt_s;

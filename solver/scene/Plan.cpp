@@ -4,6 +4,7 @@
 
 #include "solver/core/InputError.h"
 #include "solver/dem/ContactLaw.h"
+#include "solver/lattice/D2Q9.h"
 #include "solver/scene/FlowPlan.h"
 #include "solver/scene/FluidStability.h"
 #include "solver/scene/SceneKind.h"
@@ -16,8 +17,6 @@ namespace lbdem::solver {
 
 namespace {
 
-constexpr double kSoundSpeed = 0.57735026918962576; // c_s = 1/sqrt(3) in lattice units
-constexpr int kQ = 9;
 // The longest submerged runout the paper's first author reports (thesis, Delta L ~ 3.1 for the
 // loose cases): a submerged domain should leave a front at least this much room.
 constexpr double kLongestExpectedRunout = 3.1;
@@ -133,13 +132,12 @@ void planFluid(const CaseSpec& spec, Plan& plan) {
         spec.domain.gravity_m_s2 * (1.0 - f.density_kg_m3 / spec.grains.density_kg_m3);
     plan.u_expected_m_s = std::sqrt(std::max(reducedGravity, 0.0) * plan.column.height_m);
     // An imposed tau sets the step through the viscosity; else the Mach number sets it.
-    plan.dt_s = imposesTau(f.tau)
-                    ? (f.tau - 0.5) * plan.h_m * plan.h_m / (3.0 * f.viscosity_m2_s)
-                    : f.target_mach * kSoundSpeed * plan.h_m / std::max(plan.u_expected_m_s, 1e-12);
+    plan.dt_s = imposesTau(f.tau) ? (f.tau - 0.5) * plan.h_m * plan.h_m / (3.0 * f.viscosity_m2_s)
+                                  : f.target_mach * lattice::kCs * plan.h_m /
+                                        std::max(plan.u_expected_m_s, 1e-12);
     plan.tau = relaxationTime(f.tau, f.viscosity_m2_s, plan.dt_s, plan.h_m);
     plan.nu_lattice = (plan.tau - 0.5) / 3.0;
-    plan.mach = plan.u_expected_m_s * plan.dt_s / plan.h_m / kSoundSpeed;
-    planSoundSpeed(f.density_kg_m3, plan);
+    planAcoustics(f.density_kg_m3, plan);
     const double needed = std::floor(plan.dt_s / plan.dem_dt_safe_s) + 1;
     if (plan.has_grains && spec.coupling.substeps == 0 && !(needed <= kMaxSubsteps))
         throw InputError(
@@ -193,9 +191,10 @@ void planDomain(const CaseSpec& spec, Plan& plan) {
 
 } // namespace
 
-void planSoundSpeed(double fluidDensity, Plan& plan) {
-    plan.sound_speed_m_s = kSoundSpeed * plan.h_m / plan.dt_s;
+void planAcoustics(double fluidDensity, Plan& plan) {
+    plan.sound_speed_m_s = lattice::kCs * plan.h_m / plan.dt_s;
     plan.bulk_modulus_pa = fluidDensity * plan.sound_speed_m_s * plan.sound_speed_m_s;
+    plan.mach = plan.u_expected_m_s / plan.sound_speed_m_s;
 }
 
 double stableDemStep(double stiffness, double effectiveMass, double restitution) {
@@ -252,7 +251,7 @@ Plan makePlan(const CaseSpec& spec) {
     // written, a double copy of the state; while an output is written, the snapshot's and the
     // VTK image's fluid fields.
     plan.memory_bytes = static_cast<std::size_t>(
-        nodes * (kQ * bytesPerValue + 1 + 4 + 8 + 4) + nodes * kCheckpointBytesPerNode +
+        nodes * (lattice::kQ * bytesPerValue + 1 + 4 + 8 + 4) + nodes * kCheckpointBytesPerNode +
         outputNodes(spec, plan) * (kSnapshotBytesPerNode + kVtiBytesPerNode) +
         static_cast<double>(plan.grains) * 256);
     plan.output_bytes = static_cast<std::size_t>(estimateOutputBytes(spec, plan));

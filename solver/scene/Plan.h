@@ -53,8 +53,9 @@ struct Plan {
     std::vector<std::string> warnings; ///< sentences about stability or accuracy risks
 };
 
-/// Set plan's lattice sound speed and bulk modulus from its h and dt and the fluid's density.
-void planSoundSpeed(double fluidDensity, Plan& plan);
+/// Set plan's sound speed, bulk modulus and expected Mach number from its h, dt and expected
+/// speed and the fluid's density.
+void planAcoustics(double fluidDensity, Plan& plan);
 
 /// Compute the plan of a validated case. Throws InputError naming coupling.substeps when the
 /// DEM step it gives is beyond the stability limit of the integrator.

@@ -142,7 +142,7 @@ ColumnRest columnAtRest(CouplingMethod method, double resolution, int threads) {
 
 } // namespace
 
-std::vector<VerificationResult> verifyNearContact(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyNearContact(const VerificationOptions& /*options*/) {
     // Gaps between the hydrodynamic surfaces (r_h = 0.9 R), in lattice nodes: at 0 the two
     // discs the fluid sees touch, and the surfaces facing each other have no fluid node between.
     const double h = kDiameter / kNodesPerDiameter, radius = kDiameter / 2,

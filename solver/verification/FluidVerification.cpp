@@ -150,7 +150,7 @@ std::vector<VerificationResult> verifyTaylorGreen(const VerificationOptions& opt
     return out;
 }
 
-std::vector<VerificationResult> verifyCavity(const VerificationOptions& options) {
+std::vector<VerificationResult> verifyCavity(const VerificationOptions& /*options*/) {
     const FlowRun run = runFlow(fluidCase(SceneKind::Cavity, 128, lattice::CollisionModel::Mrt));
     auto r = bounded("cavity-re100", "max |u/U - Ghia| on the vertical centreline (128^2)",
                      run.metrics.at("ghia_max_deviation"), 0.01,
