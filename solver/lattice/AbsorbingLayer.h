@@ -57,8 +57,21 @@ public:
     long long cellAt(std::size_t k) const { return m_cells.at(k); }
 
 private:
-    std::vector<long long> m_cells; // fluid cells inside the layer
+    /// Consecutive layer cells of one row, all with or all without neighbours that wrap.
+    struct Run {
+        long long firstCell;    // lattice cell of the first
+        std::size_t firstIndex; // its index in m_cells and m_sigma
+        int count;              // cells in the run
+        bool interior;          // no neighbour wraps: slots at the parity's fixed offsets
+    };
+    static constexpr int kMaxRun = 512; // longest run, so that the threads share the top rows
+
+    /// apply() on the stored values S (PopulationStorage).
+    template <class S> void relaxStored(Lattice& lattice, S* stored) const;
+
+    std::vector<long long> m_cells; // fluid cells inside the layer, row by row
     std::vector<Real> m_sigma;      // their relaxation per step
+    std::vector<Run> m_runs;        // the cells in runs, in m_cells order
     Real m_rho = 1;
 };
 

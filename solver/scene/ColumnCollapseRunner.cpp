@@ -117,7 +117,7 @@ public:
         // After the loads: they read this step's post-collision populations as the kernel left
         // them.
         m_layer->apply(*m_lattice);
-        t = timer.lap(Stage::StreamCollide, t);
+        t = timer.lap(Stage::Boundaries, t);
         // After collectForces: covered nodes hold leftovers of the bulk kernel until then.
         if (m_guard->due(m_lattice->stepCount())) m_guard->check(*m_lattice);
         t = timer.lap(Stage::Diagnostics, t);
