@@ -66,6 +66,7 @@ void BounceBackCoupling::restore(const CouplingState& state) {
     std::fill(m_owner.begin(), m_owner.end(), -1);
     std::fill(m_solid.begin(), m_solid.end(), 0.0);
     m_box.assign(n, Box{});
+    forgetAnchors();
     m_initialised = state.initialised;
     const int nx = m_lattice.nx();
     for (std::size_t k = 0; k < state.cells.size(); ++k) {
@@ -102,6 +103,7 @@ void BounceBackCoupling::renumberGrains(const std::vector<std::int32_t>& newToOl
                 m_previousLoad[3 * k + c] = old[3 * newToOld[k] + c];
     }
     if (resizeGrains()) m_box.assign(m_dem.particles().size(), Box{});
+    forgetAnchors();
 }
 
 } // namespace lbdem::solver::coupling

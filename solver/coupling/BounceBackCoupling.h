@@ -7,6 +7,7 @@
 #include "solver/coupling/Coupling.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -31,6 +32,10 @@ public:
     void restore(const CouplingState& state) override;
     /// Follow dem.sortSpatially() in owners, scan boxes and the last step's loads.
     void renumberGrains(const std::vector<std::int32_t>& newToOld) override;
+    /// Grains whose nodes the last mapGrains kept without a scan (within their quiet reach).
+    std::size_t unmovedGrains() const {
+        return static_cast<std::size_t>(std::count(m_unmoved.begin(), m_unmoved.end(), 1));
+    }
     /// Grain covering each cell at the last mapGrains (-1: none).
     const HugeVector<std::int32_t>& owners() const { return m_owner; }
 
@@ -43,12 +48,20 @@ private:
         bool cover;
     };
     /// A covered node within 1.5 of its grain's surface: reset to the surface motion, source of
-    /// the moving-wall links. (i, j) wrapped into the lattice, (sx, sy) from the grain's centre.
+    /// the moving-wall links. (i, j) wrapped into the lattice, (iu, ju) unwrapped, (sx, sy) from
+    /// the grain's centre.
     struct SurfaceNode {
         long long cell;
-        int i, j;
+        int i, j, iu, ju;
         std::int32_t grain;
+        bool inBand; // within kSurfaceBand of the circle this step (the rest of the list is kept)
         Real sx, sy;
+    };
+    /// Where a grain was when its last full scan found its covered nodes all its own and no other
+    /// node inside it; `reach2` is the square of how far it may move from there before a node can
+    /// cross its circle (half the smallest distance of a node to the circle, at most 0.08).
+    struct QuietAnchor {
+        Real cx = 0, cy = 0, r = 0, reach2 = -1; // reach2 < 0: no anchor, scan every step
     };
     /// What the links of one grain need: radius and surface motion, lattice units.
     struct GrainMotion {
@@ -70,10 +83,19 @@ private:
     template <class Item, class Visit>
     void collectPerGrain(std::vector<std::vector<Item>>& lists, const Visit& visit);
     void findChanges();
-    void findGrainChanges(std::size_t p, std::vector<Change>& out) const;
-    /// Owner changes of the nodes iu in [i0, i1] of row (ju, wrapped row j) for grain p.
+    /// Owner changes of grain p: none without a scan when it is still within reach of its quiet
+    /// anchor, otherwise a scan of its boxes (which sets or drops the anchor).
+    void findGrainChanges(std::size_t p, std::vector<Change>& out);
+    /// Owner changes of the nodes iu in [i0, i1] of row (ju, wrapped row j) for grain p; lowers
+    /// `closest` to the smallest |d^2 - r^2| of a node of the row (d: its distance to the centre).
     void scanRow(std::int32_t p, int ju, int j, Real dy, int i0, int i1, Real cx, Real r,
-                 std::vector<Change>& out) const;
+                 std::vector<Change>& out, Real& closest) const;
+    /// How far grain p (centre (cx, cy), radius r, box `box`) may move before a node crosses its
+    /// circle, squared and halved against rounding, from the smallest |d^2 - r^2| of its scan;
+    /// -1 where its box (one node wider) leaves the lattice.
+    Real quietReach2(Real cx, Real cy, Real r, const Box& box, Real closest) const;
+    /// Drop every grain's quiet anchor: after a restore, a renumbering or a new grain count.
+    void forgetAnchors();
     void applyChanges();
     void refillUncovered();
     /// The surface nodes of every grain, sorted row by row.
@@ -84,14 +106,36 @@ private:
     std::size_t linkSurfaceNodes();
     template <class S> std::size_t linkSurfaceNodesStored(S* stored);
 
+    /// Surface nodes lie within kSurfaceBand of the circle (every node with a fluid neighbour
+    /// lies within sqrt(2) of it). A grain's list is found kQuietReachMax deeper, so that it still
+    /// holds all of them while the grain moves within its quiet reach.
+    static constexpr Real kSurfaceBand = 1.5;
+    /// Fewer grains than this are visited on one thread: a parallel region costs more than their
+    /// work.
+    static constexpr std::size_t kParallelGrains = 32;
+    /// The farthest a grain may move from its quiet anchor (see kSurfaceBand).
+    static constexpr Real kQuietReachMax = 0.08;
+    /// Whether a node at (sx, sy) from the centre of a circle of radius r lies within
+    /// kSurfaceBand of it; stored in SurfaceNode::inBand. One explicit fused multiply-add, so
+    /// that every place that inlines it rounds alike (fresh and kept lists agree to the bit).
+    static bool inSurfaceBand(Real sx, Real sy, Real r) {
+        const Real deep = r - kSurfaceBand;
+        return !(deep > 0 && std::fma(sx, sx, sy * sy) < deep * deep);
+    }
+
     bool m_initialised = false;
     HugeVector<std::int32_t> m_owner; // per cell: grain covering it, -1 none, -2 just uncovered
     std::vector<Box> m_box;           // per grain: the box its nodes lie in
-    std::vector<std::vector<Change>> m_threadChanges;      // per thread, grains in order
-    std::vector<Change> m_uncovered;                       // nodes left by their grain this step
-    std::vector<std::vector<SurfaceNode>> m_threadSurface; // per thread, grains in order
+    std::vector<std::vector<Change>> m_threadChanges; // per thread, grains in order
+    std::vector<Change> m_uncovered;                  // nodes left by their grain this step
+    std::vector<QuietAnchor> m_anchor;                // per grain: see QuietAnchor
+    std::vector<std::uint8_t> m_unmoved; // per grain: 1 when this step kept its anchor's nodes
+    std::vector<std::vector<SurfaceNode>> m_grainSurface; // per grain, row by row
     std::vector<SurfaceNode> m_surface;   // surface nodes of all grains, row by row (grain order)
     std::vector<std::int32_t> m_rowStart; // counting sort of m_surface by row
+    std::vector<int> m_rowCursor;         // per block of grains and row: count, then next place
+    std::vector<int> m_rowFirstColumn;    // per block of grains and row (block 0: merged)
+    std::vector<int> m_rowLastColumn;     // per block of grains and row (block 0: merged)
     std::vector<int> m_prefetchSpan;   // per row: first and last column its links' rows may touch
     std::vector<Real> m_surfaceLoad;   // per surface node: (fx, fy, torque) of its links
     std::vector<GrainMotion> m_motion; // per grain, this step
@@ -102,9 +146,6 @@ private:
 template <class Item, class Visit>
 void BounceBackCoupling::collectPerGrain(std::vector<std::vector<Item>>& lists,
                                          const Visit& visit) {
-    // Fewer grains than this are visited on one thread: a parallel region costs more than their
-    // work.
-    constexpr std::size_t kParallelGrains = 32;
     const std::size_t n = m_dem.particles().size();
     const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
     if (lists.size() < static_cast<std::size_t>(threads)) lists.resize(threads);

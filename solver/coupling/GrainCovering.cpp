@@ -4,13 +4,17 @@
 // of a thin ring of nodes only. Each row of its scan box is split at the chord of the disc: the
 // nodes surely inside (one node clear of the circle) need only their owner read, and only the
 // few nodes near the circle get the exact test |x - c| < r_h. Nodes change owner in grain order
-// and, within a grain, row by row: the same order whatever the thread count.
+// and, within a grain, row by row: the same order whatever the thread count. A grain at rest
+// is not scanned at all: its last scan found how far it may move before any node can cross its
+// circle (its quiet anchor), and until it has moved that far, or another grain takes one of its
+// nodes, its nodes stay as they are.
 #include "solver/coupling/BounceBackCoupling.h"
 
 #include "solver/lattice/D2Q9.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lbdem::solver::coupling {
 
@@ -32,13 +36,21 @@ BounceBackCoupling::Box BounceBackCoupling::grainBox(std::size_t p) const {
     return clippedBox(cx, cy, r, 0);
 }
 
-void BounceBackCoupling::findGrainChanges(std::size_t p, std::vector<Change>& out) const {
-    // Scan the grain's box now and the box it had: nodes it covers but does not own, and nodes it
-    // owns but no longer covers (all of them lie in the old box). Nothing is written, so grains
-    // scan in parallel.
+void BounceBackCoupling::findGrainChanges(std::size_t p, std::vector<Change>& out) {
     Real cx, cy, r;
     grainGeometry(p, cx, cy, r);
-    Box scan = grainBox(p);
+    QuietAnchor& anchor = m_anchor[p];
+    const Real mx = cx - anchor.cx, my = cy - anchor.cy;
+    // Within reach of its anchor no node has crossed the grain's circle and no other grain has
+    // taken one of its nodes (applyChanges drops the anchor of a grain that loses a node): the
+    // scan would find nothing. (A centre that is not a number fails the comparison.)
+    m_unmoved[p] = anchor.reach2 > 0 && r == anchor.r && mx * mx + my * my < anchor.reach2;
+    if (m_unmoved[p]) return;
+    // Scan the grain's box now and the box it had: nodes it covers but does not own, and nodes it
+    // owns but no longer covers (all of them lie in the old box). Nothing is written but this
+    // grain's anchor, so grains scan in parallel.
+    const Box now = grainBox(p);
+    Box scan = now;
     const Box& last = m_box[p];
     if (scan.i0 > scan.i1)
         scan = last;
@@ -52,17 +64,49 @@ void BounceBackCoupling::findGrainChanges(std::size_t p, std::vector<Change>& ou
     // One period at most (a grain that just crossed a periodic side has boxes a period apart).
     if (m_periodicX && scan.i1 - scan.i0 >= nx) scan.i1 = scan.i0 + nx - 1;
     if (m_periodicY && scan.j1 - scan.j0 >= ny) scan.j1 = scan.j0 + ny - 1;
+    const std::size_t before = out.size();
+    Real closest = std::numeric_limits<Real>::infinity();
     for (int ju = scan.j0; ju <= scan.j1; ++ju) {
         int i = 0, j = ju;
         if (!wrapNode(i, j)) continue;
         Real dy = ju + m_originY - cy;
         if (m_periodicY) dy -= ny * std::round(dy / ny);
-        scanRow(static_cast<std::int32_t>(p), ju, j, dy, scan.i0, scan.i1, cx, r, out);
+        scanRow(static_cast<std::int32_t>(p), ju, j, dy, scan.i0, scan.i1, cx, r, out, closest);
     }
+    // The scan box may hold the old box only one node beyond the new one: quietReach2 bounds the
+    // distances of the scanned nodes by that.
+    const bool near = scan.i0 >= now.i0 - 1 && scan.i1 <= now.i1 + 1 && scan.j0 >= now.j0 - 1 &&
+                      scan.j1 <= now.j1 + 1;
+    anchor = {};
+    if (out.size() == before && near) anchor = {cx, cy, r, quietReach2(cx, cy, r, now, closest)};
+}
+
+Real BounceBackCoupling::quietReach2(Real cx, Real cy, Real r, const Box& box, Real closest) const {
+    // Only boxes one node clear of the lattice's edges: no clipping, no periodic images.
+    if (box.i0 < 1 || box.j0 < 1 || box.i1 > m_lattice.nx() - 2 || box.j1 > m_lattice.ny() - 2)
+        return -1;
+    // Nodes outside the box lie beyond the next node past the circle's extent along an axis.
+    const Real ci = cx - m_originX, cj = cy - m_originY;
+    const Real outside = std::min({ci - r - (box.i0 - 1), box.i1 + 1 - (ci + r),
+                                   cj - r - (box.j0 - 1), box.j1 + 1 - (cj + r)});
+    // Scanned nodes: |d - r| = |d^2 - r^2| / (d + r), and within the box one node wider
+    // d <= sqrt(2) (r + 2), so d + r < 2.5 r + 3.
+    const Real scanned = closest / (2.5 * r + 3);
+    // Half of it against rounding; at most kQuietReachMax, so that the nodes found at the anchor
+    // still hold every surface node (findGrainSurface).
+    const Real reach = std::min({0.5 * outside, 0.5 * scanned, kQuietReachMax});
+    return reach > 0 ? reach * reach : -1; // NaN fails too
+}
+
+void BounceBackCoupling::forgetAnchors() {
+    const std::size_t n = m_dem.particles().size();
+    m_anchor.assign(n, QuietAnchor{});
+    m_unmoved.assign(n, 0);
+    m_grainSurface.resize(n);
 }
 
 void BounceBackCoupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0, int i1, Real cx,
-                                 Real r, std::vector<Change>& out) const {
+                                 Real r, std::vector<Change>& out, Real& closest) const {
     const int nx = m_lattice.nx();
     const long long rowBase = m_lattice.index(0, j);
     // Nodes surely inside: at least one node inside the row's chord, so their distance to the
@@ -73,7 +117,12 @@ void BounceBackCoupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0
         const Real half = std::sqrt(r * r - dy * dy), centre = cx - m_originX;
         const Real lo = std::max(static_cast<Real>(i0), std::ceil(centre - half) + 1);
         const Real hi = std::min(static_cast<Real>(i1), std::floor(centre + half) - 1);
-        if (lo <= hi) in0 = static_cast<int>(lo), in1 = static_cast<int>(hi);
+        if (lo <= hi) {
+            in0 = static_cast<int>(lo), in1 = static_cast<int>(hi);
+            // The farthest of them from the centre is one of the two ends.
+            const Real ends = std::max(std::abs(in0 - centre), std::abs(in1 - centre));
+            closest = std::min(closest, r * r - (ends * ends + dy * dy));
+        }
     }
     for (int iu = i0; iu <= i1; ++iu) {
         long long c;
@@ -87,7 +136,9 @@ void BounceBackCoupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0
             c = rowBase + i;
             Real dx = iu + m_originX - cx;
             if (m_periodicX) dx -= nx * std::round(dx / nx);
-            geometric = dx * dx + dy * dy < r * r;
+            const Real d2 = dx * dx + dy * dy;
+            geometric = d2 < r * r;
+            closest = std::min(closest, std::abs(d2 - r * r));
         }
         const bool inside = geometric && m_lattice.isFluid(c);
         const std::int32_t owner = m_owner[c];
@@ -129,6 +180,10 @@ void BounceBackCoupling::applyChanges() {
             if (!ch.cover) continue;
             const std::int32_t owner = m_owner[ch.cell];
             if (owner >= 0 && owner < ch.grain) continue;
+            if (owner >= 0) { // taken from a grain of higher index: it must scan again
+                m_anchor[owner] = QuietAnchor{};
+                m_unmoved[owner] = 0;
+            }
             if (owner == kNone && m_initialised) {
                 // Fluid swallowed by the grain hands its momentum to it.
                 Real cx, cy, r;

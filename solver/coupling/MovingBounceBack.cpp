@@ -1,17 +1,17 @@
 // Grains as moving solid nodes: covering, refilling, Bouzidi moving-wall links, momentum exchange.
 //
 // Per fluid step:
-//   1. findChanges (parallel over grains, read-only): the nodes each grain starts or stops
-//      covering, found in the ring it swept (GrainCovering.cpp);
+//   1. findChanges (parallel over grains, each writing only its own anchor): the nodes each grain
+//      starts or stops covering, found in the ring it swept (GrainCovering.cpp);
 //   2. applyChanges + refillUncovered (serial, cost ~ changed nodes): ownership, momentum of
 //      swallowed and released fluid;
 //   3. findSurfaceNodes (parallel over grains): each grain's covered nodes within 1.5 of its
-//   surface;
+//   surface (kept from the last step for a grain still within reach of its quiet anchor);
 //   4. linkSurfaceNodes (parallel over rows): the surface nodes row by row, in memory order, so
 //      that the populations of a few neighbouring rows serve every grain crossing them while they
 //      are in cache (grain by grain, each lattice line was fetched again by every neighbouring
-//      grain); each node is reset to the equilibrium of the surface motion and its moving-wall
-//      links applied, with their momentum exchange.
+//      grain); each node with a fluid neighbour is reset to the equilibrium of the surface motion
+//      and its moving-wall links applied, with their momentum exchange.
 // A surface node writes only its own populations and reads only fluid ones, so the nodes of pass 4
 // are independent; their loads sum per grain in grain order afterwards (any thread count).
 #include "solver/coupling/BounceBackCoupling.h"
@@ -33,7 +33,9 @@ using lattice::kQ;
 using lattice::kW;
 
 void BounceBackCoupling::placeGrains() {
-    if (m_box.size() != m_dem.particles().size()) m_box.assign(m_dem.particles().size(), Box{});
+    const std::size_t n = m_dem.particles().size();
+    if (m_box.size() != n) m_box.assign(n, Box{});
+    if (m_anchor.size() != n) forgetAnchors();
     findChanges();
     applyChanges();
     refillUncovered();
@@ -53,35 +55,79 @@ void BounceBackCoupling::findSurfaceNodes() {
         // u_w = (vx - w r_y, vy + w r_x), lattice units
         m_motion[p] = {r, g.vx[p] * scale, g.vy[p] * scale, g.omega[p] * m_params.dt};
     }
-    collectPerGrain(m_threadSurface, [this](std::size_t p, std::vector<SurfaceNode>& out) {
-        findGrainSurface(p, out);
-    });
-    // Counting sort by row, stable: row by row, and within a row in grain order. Per row, the
-    // columns within two rows of its surface nodes, which its links may touch (prefetched).
-    const int ny = m_lattice.ny();
-    m_rowStart.assign(static_cast<std::size_t>(ny) + 1, 0);
-    std::vector<int> firstColumn(static_cast<std::size_t>(ny), m_lattice.nx()),
-        lastColumn(static_cast<std::size_t>(ny), -1);
-    for (const auto& list : m_threadSurface)
-        for (const SurfaceNode& node : list) {
-            ++m_rowStart[node.j + 1];
-            firstColumn[node.j] = std::min(firstColumn[node.j], node.i);
-            lastColumn[node.j] = std::max(lastColumn[node.j], node.i);
+    // A grain that kept its anchor's nodes keeps the nodes found there (kQuietReachMax): only
+    // their offsets from its centre are new. Then a counting sort by row, stable: row by
+    // row, and within a row in grain order. Each thread counts and places the nodes of the same
+    // static block of grains (two static loops over the same range share their blocks), and its
+    // place in a row follows the counts of the blocks before it: the order of one thread.
+    const int nx = m_lattice.nx(), ny = m_lattice.ny();
+    const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
+    const std::size_t rows = static_cast<std::size_t>(ny);
+    m_rowCursor.assign(threads * rows, 0);
+    m_rowFirstColumn.assign(threads * rows, nx);
+    m_rowLastColumn.assign(threads * rows, -1);
+    m_rowStart.assign(rows + 1, 0);
+    m_prefetchSpan.assign(2 * rows, -1);
+#pragma omp parallel num_threads(threads) if (threads > 1)
+    {
+        const std::size_t t = static_cast<std::size_t>(ompThreadIndex());
+        int* count = &m_rowCursor[t * rows];
+        int* first = &m_rowFirstColumn[t * rows];
+        int* last = &m_rowLastColumn[t * rows];
+#pragma omp for schedule(static)
+        for (long long p = 0; p < static_cast<long long>(n); ++p) {
+            std::vector<SurfaceNode>& list = m_grainSurface[p];
+            if (m_unmoved[p]) {
+                Real cx, cy, radius;
+                grainGeometry(static_cast<std::size_t>(p), cx, cy, radius);
+                for (SurfaceNode& node : list) {
+                    node.sx = node.iu + m_originX - cx;
+                    node.sy = node.ju + m_originY - cy;
+                    node.inBand = inSurfaceBand(node.sx, node.sy, radius);
+                }
+            } else {
+                list.clear();
+                findGrainSurface(static_cast<std::size_t>(p), list);
+            }
+            for (const SurfaceNode& node : list) {
+                if (!node.inBand) continue;
+                ++count[node.j];
+                first[node.j] = std::min(first[node.j], node.i);
+                last[node.j] = std::max(last[node.j], node.i);
+            }
         }
-    m_prefetchSpan.assign(2 * static_cast<std::size_t>(ny), -1);
-    for (int j = 0; j < ny; ++j) {
-        int lo = m_lattice.nx(), hi = -1;
-        for (int k = std::max(j - 2, 0); k <= std::min(j + 2, ny - 1); ++k)
-            lo = std::min(lo, firstColumn[k]), hi = std::max(hi, lastColumn[k]);
-        m_prefetchSpan[2 * j] = std::max(lo - 2, 0);
-        m_prefetchSpan[2 * j + 1] = std::min(hi + 2, m_lattice.nx() - 1);
+#pragma omp single
+        {
+            // Row starts, each block's cursor within its row, and per row the columns within
+            // two rows of its surface nodes, which its links may touch (prefetched).
+            for (std::size_t j = 0; j < rows; ++j) {
+                int at = m_rowStart[j];
+                for (std::size_t b = 0; b < static_cast<std::size_t>(threads); ++b) {
+                    const int c = m_rowCursor[b * rows + j];
+                    m_rowCursor[b * rows + j] = at;
+                    at += c;
+                    m_rowFirstColumn[j] =
+                        std::min(m_rowFirstColumn[j], m_rowFirstColumn[b * rows + j]);
+                    m_rowLastColumn[j] =
+                        std::max(m_rowLastColumn[j], m_rowLastColumn[b * rows + j]);
+                }
+                m_rowStart[j + 1] = at;
+            }
+            for (int j = 0; j < ny; ++j) {
+                int lo = nx, hi = -1;
+                for (int k = std::max(j - 2, 0); k <= std::min(j + 2, ny - 1); ++k)
+                    lo = std::min(lo, m_rowFirstColumn[k]), hi = std::max(hi, m_rowLastColumn[k]);
+                m_prefetchSpan[2 * j] = std::max(lo - 2, 0);
+                m_prefetchSpan[2 * j + 1] = std::min(hi + 2, nx - 1);
+            }
+            m_surface.resize(static_cast<std::size_t>(m_rowStart[ny]));
+        }
+        int* cursor = &m_rowCursor[t * rows];
+#pragma omp for schedule(static)
+        for (long long p = 0; p < static_cast<long long>(n); ++p)
+            for (const SurfaceNode& node : m_grainSurface[p])
+                if (node.inBand) m_surface[cursor[node.j]++] = node;
     }
-    for (int j = 0; j < ny; ++j)
-        m_rowStart[j + 1] += m_rowStart[j];
-    m_surface.resize(static_cast<std::size_t>(m_rowStart[ny]));
-    for (const auto& list : m_threadSurface)
-        for (const SurfaceNode& node : list)
-            m_surface[m_rowStart[node.j]++] = node;
 }
 
 void BounceBackCoupling::findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) const {
@@ -91,8 +137,10 @@ void BounceBackCoupling::findGrainSurface(std::size_t p, std::vector<SurfaceNode
     const auto id = static_cast<std::int32_t>(p);
     // Only nodes within 1.5 of the surface: deeper ones have all eight neighbours covered, so
     // nothing they hold reaches the fluid (they keep near the equilibrium of the grain's motion
-    // by themselves: the surface nodes around them are reset every step).
-    const Real deep = r - 1.5;
+    // by themselves: the surface nodes around them are reset every step). Kept a little deeper,
+    // to kSurfaceBand + kQuietReachMax, so that the list still holds every surface node after
+    // the grain has moved within its quiet reach; inBand marks those of this step.
+    const Real deep = r - kSurfaceBand - kQuietReachMax;
     const Real centreI = cx - m_originX;
     for (int ju = box.j0; ju <= box.j1; ++ju) {
         const Real sy = ju + m_originY - cy;
@@ -121,7 +169,7 @@ void BounceBackCoupling::findGrainSurface(std::size_t p, std::vector<SurfaceNode
             if (m_owner[cell] != id) continue;
             const Real sx = iu + m_originX - cx;
             if (deep > 0 && sx * sx + sy * sy < deep * deep) continue;
-            out.push_back({cell, i, j, id, sx, sy});
+            out.push_back({cell, i, j, iu, ju, id, inSurfaceBand(sx, sy, r), sx, sy});
         }
     }
 }
@@ -171,15 +219,20 @@ template <class Access>
 int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, Real vx, Real vy,
                     Real w, Real& loadX, Real& loadY, Real& loadT) {
     // The surface node holds the equilibrium of the surface motion (finite values for the
-    // branch-free bulk kernel, a meaningful velocity in snapshots); its links then overwrite the
-    // slots its fluid neighbours read.
+    // branch-free bulk kernel, a meaningful velocity in snapshots), except in the slots its fluid
+    // neighbours read, which its links write.
+    unsigned open = 0; // bit `back`: the node at cell + c_back is fluid that no grain covers
+    for (int back = 1; back < kQ; ++back) {
+        const long long fluid = a.neighbour(cell, back);
+        if (fluid >= 0 && a.open(fluid)) open |= 1u << back;
+    }
     const Real sux = vx - w * sy, suy = vy + w * sx;
     for (int q = 0; q < kQ; ++q)
-        a.set(cell, q, equilibrium(q, 1.0, sux, suy));
+        if (!(open >> q & 1u)) a.set(cell, q, equilibrium(q, 1.0, sux, suy));
     int links = 0;
     for (int back = 1; back < kQ; ++back) { // fluid node x_f = solid + c_back
+        if (!(open >> back & 1u)) continue;
         const long long fluid = a.neighbour(cell, back);
-        if (fluid < 0 || !a.open(fluid)) continue;
         const int toward = kOpposite[back];
         const Real px = sx + kCx[back], py = sy + kCy[back];
         const Real q = linkWallFraction(px, py, kCx[toward], kCy[toward], r);

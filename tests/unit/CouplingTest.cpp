@@ -69,6 +69,7 @@ private slots:
     void cornerGrainStaysBounded();
     void threadCountDoesNotMatter();
     void farGrainsScanNoFurtherThanTheLattice();
+    void slowGrainsCoverExactlyTheirDiscs();
 };
 
 void CouplingTest::cellFractionInsideOutsideHalf() {
@@ -456,6 +457,64 @@ void CouplingTest::farGrainsScanNoFurtherThanTheLattice() {
         if (!periodic) QCOMPARE(covered, 0LL); // all three grains left the walled lattice
         QVERIFY(covered < lat.cells());
     }
+}
+
+void CouplingTest::slowGrainsCoverExactlyTheirDiscs() {
+    // Grains at rest, creeping, trembling and closing on each other and on a wall: a grain within
+    // its quiet reach is not rescanned, so after every mapping the owners must still be exactly
+    // the geometric ones (a node is covered by the lowest-index grain whose circle holds it) and
+    // the links exactly those of the covered nodes with an open neighbour, counted afresh.
+    lattice::LatticeSetup s = periodicBox(120);
+    s.ny = 80;
+    s.left.type = s.right.type = s.bottom.type = s.top.type = lattice::SideType::Wall;
+    lattice::Lattice lat(s);
+    dem::DemSystem dem;
+    const double start[][3] = {{20.3, 20.6, 6.4},  {40.1, 21.2, 7.1}, {60.7, 40.4, 6.2},
+                               {73.9, 40.9, 6.6},  {95.2, 60.3, 5.8}, {30.4, 60.8, 6.9},
+                               {100.6, 20.1, 7.3}, {12.2, 8.4, 5.3}};
+    for (const auto& d : start)
+        dem.addDisc(d[0], d[1], d[2]);
+    coupling::BounceBackCoupling link(lat, dem, latticeUnits(CouplingMethod::BounceBack));
+    auto& g = dem.particles();
+    std::size_t quietSteps = 0;
+    for (int step = 0; step < 600; ++step) {
+        const double t = step;
+        g.x[1] = start[1][0] + 1e-4 * t; // creeping
+        // Grain 2 presses into grain 3, at rest, takes some of its nodes and leaves them again.
+        g.x[2] = start[2][0] + 0.8 * (1 - std::cos(2 * kPi * t / 300));
+        g.x[4] = start[4][0] + 0.02 * std::sin(2 * kPi * t / 50);  // trembling
+        g.y[5] = start[5][1] + 1e-5 * std::sin(2 * kPi * t / 300); // all but still
+        g.x[6] = start[6][0] + 2e-2 * t;                           // into the wall
+        g.y[7] = start[7][1] - 1e-3 * t;                           // onto the floor
+        link.mapGrains();
+        quietSteps += link.unmovedGrains();
+        lat.step();
+        link.collectForces();
+        long long wrong = 0, links = 0;
+        const auto& owner = link.owners();
+        for (int j = 0; j < lat.ny(); ++j)
+            for (int i = 0; i < lat.nx(); ++i) {
+                const long long c = lat.index(i, j);
+                std::int32_t expected = -1;
+                for (std::size_t p = 0; p < g.size() && expected < 0; ++p) {
+                    const double dx = lat.nodeX(i) - g.x[p], dy = lat.nodeY(j) - g.y[p];
+                    if (lat.isFluid(c) && dx * dx + dy * dy < g.radius[p] * g.radius[p])
+                        expected = static_cast<std::int32_t>(p);
+                }
+                wrong += owner[c] != expected;
+                if (owner[c] < 0) continue;
+                for (int q = 1; q < lattice::kQ; ++q) {
+                    const int ni = i + lattice::kCx[q], nj = j + lattice::kCy[q];
+                    if (ni < 0 || nj < 0 || ni >= lat.nx() || nj >= lat.ny()) continue;
+                    const long long n = lat.index(ni, nj);
+                    links += lat.isFluid(n) && owner[n] < 0;
+                }
+            }
+        QVERIFY2(wrong == 0, qPrintable(QString("step %1: %2 nodes").arg(step).arg(wrong)));
+        QCOMPARE(static_cast<long long>(link.boundaryCount()), links);
+    }
+    // The quiet path was taken: grains 0, 3 and 5 are at rest or all but, most of the time.
+    QVERIFY2(quietSteps > 1200, qPrintable(QString("%1 grain-steps").arg(quietSteps)));
 }
 
 QTEST_APPLESS_MAIN(CouplingTest)
