@@ -80,6 +80,10 @@ private:
     /// Fill lists[t] with visit(p, lists[t]) for the t-th static block of grains, one block per
     /// thread (one thread for few grains): read in thread order, the lists hold their items in
     /// grain order whatever the thread count.
+    /// Threads of a loop over the grains: one for fewer than kParallelGrains.
+    int grainThreads() const {
+        return m_dem.particles().size() >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
+    }
     template <class Item, class Visit>
     void collectPerGrain(std::vector<std::vector<Item>>& lists, const Visit& visit);
     void findChanges();
@@ -147,7 +151,7 @@ template <class Item, class Visit>
 void BounceBackCoupling::collectPerGrain(std::vector<std::vector<Item>>& lists,
                                          const Visit& visit) {
     const std::size_t n = m_dem.particles().size();
-    const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
+    const int threads = grainThreads();
     if (lists.size() < static_cast<std::size_t>(threads)) lists.resize(threads);
     for (auto& list : lists)
         list.clear();

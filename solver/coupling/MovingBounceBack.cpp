@@ -61,7 +61,7 @@ void BounceBackCoupling::findSurfaceNodes() {
     // static block of grains (two static loops over the same range share their blocks), and its
     // place in a row follows the counts of the blocks before it: the order of one thread.
     const int nx = m_lattice.nx(), ny = m_lattice.ny();
-    const int threads = n >= kParallelGrains ? std::max(ompMaxThreads(), 1) : 1;
+    const int threads = grainThreads();
     const std::size_t rows = static_cast<std::size_t>(ny);
     m_rowCursor.assign(threads * rows, 0);
     m_rowFirstColumn.assign(threads * rows, nx);
