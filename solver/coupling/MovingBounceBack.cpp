@@ -265,8 +265,8 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
 
 /// Requests, a few lines at a time, the lines of one lattice row that the links of the rows
 /// around it will read: the nine population arrays over the row's prefetch span. Spread over
-/// the surface nodes of the row being linked, a share per node, the link pass ran 17 % faster
-/// than with all of them issued on entering the row (docs/performance.md).
+/// the surface nodes of the row being linked, a share per node, the grain mapping ran about
+/// 17 % faster than with all of them issued on entering the row (docs/performance.md).
 template <class S> class RowPrefetcher {
 public:
     RowPrefetcher(const S* stored, long long cells, int nx, int ny, const int* span)
