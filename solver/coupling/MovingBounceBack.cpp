@@ -269,16 +269,16 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
 /// 17 % faster than with all of them issued on entering the row (docs/performance.md).
 template <class S> class RowPrefetcher {
 public:
-    RowPrefetcher(const S* stored, long long cells, int nx, int ny, const int* span)
-        : m_stored(stored), m_cells(cells), m_nx(nx), m_ny(ny), m_span(span) {}
+    RowPrefetcher(const S* stored, const lattice::Lattice& lattice, const int* span)
+        : m_stored(stored), m_lattice(lattice), m_span(span) {}
 
     /// Request what is left of the last row, then aim at `row` (none beyond the lattice or
     /// without links near it), spreading its lines over `nodes` calls of next().
     void aim(int row, long long nodes) {
         next(m_left);
         m_q = kQ;
-        if (row >= m_ny || m_span[2 * row + 1] < 0) return;
-        m_row = m_stored + static_cast<long long>(row) * m_nx;
+        if (row >= m_lattice.ny() || m_span[2 * row + 1] < 0) return;
+        m_row = m_stored + m_lattice.index(0, row);
         m_first = m_span[2 * row];
         m_last = m_span[2 * row + 1];
         m_q = 0;
@@ -293,15 +293,14 @@ private:
     static constexpr int kPerLine = 64 / static_cast<int>(sizeof(S));
     void next(long long count) {
         for (; count > 0 && m_q < kQ; --count, --m_left) {
-            __builtin_prefetch(m_row + m_q * m_cells + m_i, 1);
+            __builtin_prefetch(m_row + m_q * m_lattice.cells() + m_i, 1);
             m_i += kPerLine;
             if (m_i > m_last) ++m_q, m_i = m_first;
         }
     }
 
     const S* m_stored;
-    long long m_cells;
-    int m_nx, m_ny;
+    const lattice::Lattice& m_lattice;
     const int* m_span; // per row: first and last column (BounceBackCoupling::m_prefetchSpan)
     const S* m_row = nullptr;
     int m_first = 0, m_last = -1, m_q = kQ, m_i = 0, m_perNode = 0;
@@ -347,14 +346,13 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
     const int nx = m_lattice.nx(), ny = m_lattice.ny();
     const auto count = static_cast<long long>(m_surface.size());
     m_surfaceLoad.resize(3 * m_surface.size());
-    const long long cells = m_lattice.cells();
     std::size_t links = 0;
     // Static schedule over the row-sorted list: each thread takes a band of rows. While it links
     // the nodes of a row, it requests the lines that the links kPrefetchRows rows further on will
     // need, a share per node, so that the loads overlap instead of waiting one by one.
 #pragma omp parallel reduction(+ : links) if (count >= kParallelMin)
     {
-        RowPrefetcher<S> prefetch(stored, cells, nx, ny, m_prefetchSpan.data());
+        RowPrefetcher<S> prefetch(stored, m_lattice, m_prefetchSpan.data());
         bool aimed = false; // at the row kPrefetchRows beyond this thread's current row
 #pragma omp for schedule(static)
         for (long long k = 0; k < count; ++k) {
