@@ -67,6 +67,12 @@ private:
     struct GrainMotion {
         Real r, vx, vy, w;
     };
+    /// Mass an interpolated link sent into fluid node `fluid` beyond what halfway bounce-back would
+    /// (see linkSurfaceNode); taken back from that node's rest population after the link pass.
+    struct LinkMassExcess {
+        long long fluid;
+        Real excess;
+    };
     /// Node access of the links of surface nodes near the lattice's edges (wrapping, flags and
     /// owners through the lattice and this coupling); defined with the links.
     struct EdgeAccess;
@@ -109,6 +115,8 @@ private:
     /// order); loads are summed per grain afterwards in grain order. Returns the link count.
     std::size_t linkSurfaceNodes();
     template <class S> std::size_t linkSurfaceNodesStored(S* stored);
+    /// Take each link's excess mass back from its fluid node's rest population, in list order.
+    void returnLinkMassExcess();
 
     /// Surface nodes lie within kSurfaceBand of the circle (every node with a fluid neighbour
     /// lies within sqrt(2) of it). A grain's list is found kQuietReachMax deeper, so that it still
@@ -140,11 +148,12 @@ private:
     std::vector<int> m_rowCursor;         // per block of grains and row: count, then next place
     std::vector<int> m_rowFirstColumn;    // per block of grains and row (block 0: merged)
     std::vector<int> m_rowLastColumn;     // per block of grains and row (block 0: merged)
-    std::vector<int> m_prefetchSpan;   // per row: first and last column its links' rows may touch
-    std::vector<Real> m_surfaceLoad;   // per surface node: (fx, fy, torque) of its links
-    std::vector<GrainMotion> m_motion; // per grain, this step
-    std::size_t m_linkCount = 0;       // links of the last mapGrains
-    std::vector<Real> m_previousLoad;  // (fx, fy, torque) per grain of the step before
+    std::vector<int> m_prefetchSpan; // per row: first and last column its links' rows may touch
+    std::vector<Real> m_surfaceLoad; // per surface node: (fx, fy, torque) of its links
+    std::vector<std::vector<LinkMassExcess>> m_threadMassExcess; // per thread, surface list order
+    std::vector<GrainMotion> m_motion;                           // per grain, this step
+    std::size_t m_linkCount = 0;                                 // links of the last mapGrains
+    std::vector<Real> m_previousLoad; // (fx, fy, torque) per grain of the step before
 };
 
 template <class Item, class Visit>

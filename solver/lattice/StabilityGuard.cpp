@@ -24,7 +24,8 @@ void StabilityGuard::check(const Lattice& lattice) const {
         Real ux, uy;
         lattice.velocity(c, ux, uy);
         // Written so that NaN fails every comparison and lands in the bad branch.
-        if (!(rho > 0) || !(ux * ux + uy * uy <= maxU2)) bad = std::min(bad, c);
+        if (!(rho >= kMinDensity && rho <= kMaxDensity) || !(ux * ux + uy * uy <= maxU2))
+            bad = std::min(bad, c);
     }
     if (bad == std::numeric_limits<long long>::max()) return;
 
@@ -36,15 +37,23 @@ void StabilityGuard::check(const Lattice& lattice) const {
     char what[160];
     if (!std::isfinite(rho) || !std::isfinite(mach))
         std::snprintf(what, sizeof what, "the density or velocity is not a number");
-    else if (!(rho > 0))
-        std::snprintf(what, sizeof what, "the density is negative (%.3g)", rho);
+    else if (!(rho >= kMinDensity && rho <= kMaxDensity))
+        std::snprintf(what, sizeof what,
+                      "the density is %.3g, outside [%.2g, %.2g] of the fluid at rest (1)", rho,
+                      kMinDensity, kMaxDensity);
     else
         std::snprintf(what, sizeof what, "the lattice Mach number is %.3g, above the limit %.3g",
                       mach, m_maxMach);
 
     const CollisionParams& p = lattice.setup().collision;
     std::string cause;
-    if (p.tau - 0.5 < 0.01 && p.model != CollisionModel::MrtLes) {
+    const bool densityOnly = std::isfinite(rho) && std::isfinite(mach) && mach <= m_maxMach;
+    if (densityOnly) {
+        cause = "the fluid is no longer nearly incompressible there: fluid shut in a pore that "
+                "grains or walls seal off (gaps between hydrodynamic radii narrower than a node), "
+                "or a pressure wave too strong for the lattice; refine the lattice "
+                "(fluid.resolution)";
+    } else if (p.tau - 0.5 < 0.01 && p.model != CollisionModel::MrtLes) {
         char text[240];
         std::snprintf(text, sizeof text,
                       "tau - 0.5 = %.3g is too close to 0.5 for collision '%s' without LES; use "

@@ -1,4 +1,4 @@
-// Detects a diverging fluid (NaN, negative density, Mach above a limit) and says why.
+// Detects a diverging fluid (NaN, a density far from 1, Mach above a limit) and says why.
 #pragma once
 
 #include "solver/lattice/Lattice.h"
@@ -15,6 +15,11 @@ public:
     static constexpr int kDefaultInterval = 50;
     /// Lattice Mach number |u| / c_s above which the run is stopped (0.5: |u| ~ 0.29).
     static constexpr Real kDefaultMaxMach = 0.5;
+    /// Densities outside [kMinDensity, kMaxDensity] stop the run: the lattice pressure is
+    /// rho c_s^2, so the fluid there is no longer nearly incompressible (a column's pore pressure
+    /// is |rho - 1| ~ 0.03).
+    static constexpr Real kMinDensity = 0.5;
+    static constexpr Real kMaxDensity = 2.0;
 
     /// A guard for a lattice of spacing h_m [m] (used to state positions in metres).
     explicit StabilityGuard(Real h_m, int interval = kDefaultInterval,

@@ -1,6 +1,7 @@
 // The column collapse as a SceneRunner: DEM column, optional lattice and coupling, diagnostics.
 #include "solver/scene/ColumnCollapseRunner.h"
 #include "solver/core/Constants.h"
+#include "solver/core/InputError.h"
 
 #include "solver/coupling/Coupling.h"
 #include "solver/dem/DemGuard.h"
@@ -121,7 +122,14 @@ public:
         // After collectForces: covered nodes hold leftovers of the bulk kernel until then.
         if (m_guard->due(m_lattice->stepCount())) m_guard->check(*m_lattice);
         t = timer.lap(Stage::Diagnostics, t);
-        m_column.advance(m_plan.dt_s, m_plan.substeps);
+        try {
+            m_column.advance(m_plan.dt_s, m_plan.substeps);
+        } catch (const SimulationError&) {
+            // Grains fed by a fluid that diverged since the guard's last check fail first: name
+            // the fluid's failure (node, position, cause) rather than the DEM step.
+            m_guard->check(*m_lattice);
+            throw;
+        }
         timer.lap(Stage::DemSubsteps, t);
     }
 

@@ -35,6 +35,17 @@ void fluidMomentum(const lattice::Lattice& lat, const coupling::Coupling& link, 
     }
 }
 
+/// Total mass of the fluid: the populations of every node that no grain covers.
+double fluidMass(const lattice::Lattice& lat, const coupling::Coupling& link) {
+    double m = 0;
+    for (long long c = 0; c < lat.cells(); ++c) {
+        if (link.solidFraction()[c] > 0) continue;
+        for (int q = 0; q < lattice::kQ; ++q)
+            m += lat.population(lat.postSlot(c, q), q);
+    }
+    return m;
+}
+
 } // namespace
 
 class CouplingTest : public QObject {
@@ -47,6 +58,7 @@ private slots:
     void galileanInvariance();
     void momentumConservation_data();
     void momentumConservation();
+    void linksConserveMass();
     void loadsReachDemInSi();
     void restartIsBitForBit();
     void psmStateIsEmpty();
@@ -179,6 +191,38 @@ void CouplingTest::momentumConservation() {
                                 .arg(jy1 - jy0)
                                 .arg(load.fx)
                                 .arg(load.fy)));
+    }
+}
+
+void CouplingTest::linksConserveMass() {
+    // A fixed disc in a sheared periodic stream: the fluid's mass (the populations of the nodes
+    // no grain covers) stays what it was, step after step, as for halfway bounce-back. The
+    // interpolated links alone return more or less than arrived (here 0.033 of one node's mass
+    // in the first step); in a pore sealed by grains and a wall that drift drained the pore to
+    // rho = 0.14 in the dense 5 deg column (docs/coupling-methods.md, "Mass in sealed pores").
+    lattice::Lattice lat(periodicBox(40));
+    lat.initialise([](double x, double y, double& rho, double& ux, double& uy) {
+        rho = 1 + 0.01 * std::sin(2 * kPi * x / 40);
+        ux = 0.04 + 0.01 * std::sin(2 * kPi * y / 40);
+        uy = 0.01 * std::cos(2 * kPi * x / 40);
+    });
+    dem::DemSystem dem;
+    dem.addDisc(19.7, 20.2, 7.3);
+    const auto linkOwned =
+        coupling::makeCoupling(lat, dem, latticeUnits(CouplingMethod::BounceBack));
+    coupling::Coupling& link = *linkOwned;
+    link.mapGrains();
+    lat.step();
+    link.collectForces();
+    const double start = fluidMass(lat, link);
+    for (int step = 0; step < 100; ++step) {
+        link.mapGrains();
+        lat.step();
+        link.collectForces();
+        const double drift = fluidMass(lat, link) - start;
+        QVERIFY2(
+            std::abs(drift) < 1e-11 * start,
+            qPrintable(QString("step %1: mass %2 off (of %3)").arg(step).arg(drift).arg(start)));
     }
 }
 

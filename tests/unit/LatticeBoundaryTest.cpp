@@ -228,6 +228,20 @@ void LatticeBoundaryTest::guardNamesStepAndCause() {
                      message.contains("too close to 0.5"),
                  qPrintable(message));
     }
+    // A node at rest with 40 % of its mass gone (a drained sealed pore) stops the run too.
+    Lattice drained(setup);
+    const long long cell = drained.index(5, 2);
+    for (int q = 0; q < kQ; ++q)
+        drained.setPopulation(drained.postSlot(cell, q), q, 0.4 * kW[q]);
+    try {
+        guard.check(drained);
+        QFAIL("the guard did not stop a density of 0.4");
+    } catch (const SimulationError& error) {
+        const QString message = error.what();
+        QVERIFY2(message.contains("(5, 2)") && message.contains("density is 0.4") &&
+                     message.contains("seal off"),
+                 qPrintable(message));
+    }
 }
 
 QTEST_APPLESS_MAIN(LatticeBoundaryTest)
