@@ -221,7 +221,7 @@ template <class S> struct InteriorAccess {
 /// The excess is small in open fluid, but in a pore that grains and a wall seal off (the gaps
 /// between hydrodynamic radii are under a node at d_min/h = 6 to 12) it accumulated: a sealed
 /// pore of the dense 5 deg column drained to rho = 0.14 in 4.6 tau_c, its suction pressed two
-/// floor grains together with 700 times their buoyant weight, and the run diverged
+/// floor grains together with 400 times their buoyant weight, and the run diverged
 /// (docs/coupling-methods.md, "Mass in sealed pores"). Each link's excess is appended to
 /// `massExcess` and later taken from the fluid node's rest population, which carries no momentum:
 /// the momentum exchange and the interpolated wall stay as they are, and the links conserve mass.
