@@ -67,10 +67,12 @@ private:
     struct GrainMotion {
         Real r, vx, vy, w;
     };
-    /// Mass an interpolated link sent into fluid node `fluid` beyond what halfway bounce-back would
-    /// (see linkSurfaceNode); taken back from that node's rest population after the link pass.
+    /// Mass an interpolated link sent into fluid node `fluid` (lattice row `row`) beyond what
+    /// halfway bounce-back would (see linkSurfaceNode); taken back from that node's rest
+    /// population once no link reads it any more.
     struct LinkMassExcess {
         long long fluid;
+        int row;
         Real excess;
     };
     /// Node access of the links of surface nodes near the lattice's edges (wrapping, flags and
@@ -115,8 +117,14 @@ private:
     /// order); loads are summed per grain afterwards in grain order. Returns the link count.
     std::size_t linkSurfaceNodes();
     template <class S> std::size_t linkSurfaceNodesStored(S* stored);
-    /// Take each link's excess mass back from its fluid node's rest population, in list order.
-    void returnLinkMassExcess();
+    /// Return the pending excess of fluid rows up to `upTo` (the links of later rows read no
+    /// further than upTo + 1): from the nodes of rows that only this thread's links touch (from
+    /// firstRow + 2 on, clear of the lattice's edges) at once, the rest to `deferred`.
+    template <class S>
+    void settleMassExcess(S* stored, std::vector<LinkMassExcess>& pending,
+                          std::vector<LinkMassExcess>& deferred, int upTo, int firstRow) const;
+    /// Take one link's excess back from its fluid node's rest population.
+    template <class S> static void returnMassExcess(S* stored, const LinkMassExcess& e);
 
     /// Surface nodes lie within kSurfaceBand of the circle (every node with a fluid neighbour
     /// lies within sqrt(2) of it). A grain's list is found kQuietReachMax deeper, so that it still
@@ -150,9 +158,10 @@ private:
     std::vector<int> m_rowLastColumn;     // per block of grains and row (block 0: merged)
     std::vector<int> m_prefetchSpan; // per row: first and last column its links' rows may touch
     std::vector<Real> m_surfaceLoad; // per surface node: (fx, fy, torque) of its links
-    std::vector<std::vector<LinkMassExcess>> m_threadMassExcess; // per thread, surface list order
-    std::vector<GrainMotion> m_motion;                           // per grain, this step
-    std::size_t m_linkCount = 0;                                 // links of the last mapGrains
+    std::vector<std::vector<LinkMassExcess>> m_threadMassExcess; // per thread: for after the pass
+    std::vector<std::vector<LinkMassExcess>> m_threadPendingExcess; // per thread: rows in reach
+    std::vector<GrainMotion> m_motion;                              // per grain, this step
+    std::size_t m_linkCount = 0;                                    // links of the last mapGrains
     std::vector<Real> m_previousLoad; // (fx, fy, torque) per grain of the step before
 };
 

@@ -263,7 +263,7 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
             value = (out + (2 * q - 1) * a.get(fluid, back) + moving) / (2 * q);
         a.set(cell, back, value);
         const Real extraMass = value - (out + moving);
-        if (extraMass != 0) massExcess.push_back({fluid, extraMass});
+        if (extraMass != 0) massExcess.add(fluid, back, extraMass);
         const Real excess = out + value - 2 * kW[toward];
         const Real dpx = kCx[toward] * excess - ux * (out - value);
         const Real dpy = kCy[toward] * excess - uy * (out - value);
@@ -274,6 +274,17 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
     }
     return links;
 }
+
+/// Where linkSurfaceNode leaves each link's excess mass: the thread's pending list, with the
+/// lattice row of the fluid node (that of the surface node plus the link's c_y; outside the
+/// lattice where it wraps, which settleMassExcess treats as an edge row).
+template <class List> struct ExcessCollector {
+    List* pending;
+    int surfaceRow;
+    void add(long long fluid, int back, Real excess) {
+        pending->push_back({fluid, surfaceRow + kCy[back], excess});
+    }
+};
 
 /// Requests, a few lines at a time, the lines of one lattice row that the links of the rows
 /// around it will read: the nine population arrays over the row's prefetch span. Spread over
@@ -362,22 +373,34 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
     // Static schedule over the row-sorted list: each thread takes a band of rows. While it links
     // the nodes of a row, it requests the lines that the links kPrefetchRows rows further on will
     // need, a share per node, so that the loads overlap instead of waiting one by one.
+    // Each link's excess mass goes back to its fluid node's rest population once every link that
+    // reads that node (those of the surface rows beside it) has run, while the row is in cache,
+    // by the one thread whose links touch it; rows two threads share wait for a serial pass.
+    // Either way a node's returns come in list order after all its readers: the same bits on
+    // any thread count as returning everything after the pass.
     const int threads = count >= kParallelMin ? ompMaxThreads() : 1;
-    if (m_threadMassExcess.size() < static_cast<std::size_t>(threads))
-        m_threadMassExcess.resize(threads);
-    for (auto& list : m_threadMassExcess)
-        list.clear();
+    for (auto* lists : {&m_threadMassExcess, &m_threadPendingExcess}) {
+        if (lists->size() < static_cast<std::size_t>(threads)) lists->resize(threads);
+        for (auto& list : *lists)
+            list.clear();
+    }
 #pragma omp parallel num_threads(threads) reduction(+ : links) if (threads > 1)
     {
         RowPrefetcher<S> prefetch(stored, m_lattice, m_prefetchSpan.data());
-        auto& massExcess = m_threadMassExcess[ompThreadIndex()];
+        auto& deferred = m_threadMassExcess[ompThreadIndex()];
+        auto& pending = m_threadPendingExcess[ompThreadIndex()];
+        ExcessCollector<std::vector<LinkMassExcess>> massExcess{&pending, 0};
         bool aimed = false; // at the row kPrefetchRows beyond this thread's current row
+        int firstRow = 0;   // of this thread's block
 #pragma omp for schedule(static)
         for (long long k = 0; k < count; ++k) {
             const SurfaceNode& node = m_surface[k];
             if (!aimed || node.j != m_surface[k - 1].j) {
                 prefetch.aim(node.j + kPrefetchRows, m_rowStart[node.j + 1] - k);
+                if (!aimed) firstRow = node.j;
                 aimed = true;
+                settleMassExcess(stored, pending, deferred, node.j - 2, firstRow);
+                massExcess.surfaceRow = node.j;
             }
             prefetch.next();
             const GrainMotion& m = m_motion[node.grain];
@@ -392,23 +415,46 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
             m_surfaceLoad[3 * k + 1] = loadY;
             m_surfaceLoad[3 * k + 2] = loadT;
         }
+        // The last rows' nodes may be read by the next thread's links.
+        deferred.insert(deferred.end(), pending.begin(), pending.end());
     }
     // Per grain in list order: fixed by the grains' positions, whatever the thread count.
     addEntryLoads(m_surfaceLoad, m_surface.size(),
                   [this](std::size_t k) { return m_surface[k].grain; });
-    returnLinkMassExcess();
+    // The static schedule gave thread t the t-th block of the surface list: the lists in thread
+    // order keep each node's returns in list order.
+    for (const auto& list : m_threadMassExcess)
+        for (const LinkMassExcess& e : list)
+            returnMassExcess(stored, e);
     return links;
 }
 
-void BounceBackCoupling::returnLinkMassExcess() {
-    // The static schedule gave thread t the t-th block of the surface list: the lists in thread
-    // order are the links in list order, so each node's sum has the same order on any thread
-    // count.
-    for (const auto& list : m_threadMassExcess)
-        for (const LinkMassExcess& e : list) {
-            const long long slot = m_lattice.postSlot(e.fluid, 0);
-            m_lattice.setPopulation(slot, 0, m_lattice.population(slot, 0) - e.excess);
-        }
+template <class S>
+void BounceBackCoupling::settleMassExcess(S* stored, std::vector<LinkMassExcess>& pending,
+                                          std::vector<LinkMassExcess>& deferred, int upTo,
+                                          int firstRow) const {
+    // Fluid rows within kEdgeRows of the lattice's edges may be linked across a periodic side.
+    constexpr int kEdgeRows = 3;
+    const int lastOwn = m_lattice.ny() - kEdgeRows;
+    std::size_t kept = 0;
+    for (std::size_t n = 0; n < pending.size(); ++n) {
+        const LinkMassExcess& e = pending[n];
+        if (e.row > upTo)
+            pending[kept++] = e;
+        else if (e.row >= firstRow + 2 && e.row >= kEdgeRows && e.row < lastOwn)
+            returnMassExcess(stored, e);
+        else
+            deferred.push_back(e);
+    }
+    pending.resize(kept);
+}
+
+template <class S> void BounceBackCoupling::returnMassExcess(S* stored, const LinkMassExcess& e) {
+    // The rest population f_0 of a node sits at the node itself at either parity.
+    static_assert(kCx[0] == 0 && kCy[0] == 0 && kOpposite[0] == 0);
+    using Stored = lattice::StoredPopulation<S>;
+    S& f0 = stored[e.fluid];
+    f0 = Stored::store(Stored::load(f0, kW[0]) - e.excess, kW[0]);
 }
 
 } // namespace lbdem::solver::coupling
