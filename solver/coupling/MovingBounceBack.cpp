@@ -11,9 +11,12 @@
 //      that the populations of a few neighbouring rows serve every grain crossing them while they
 //      are in cache (grain by grain, each lattice line was fetched again by every neighbouring
 //      grain); each node with a fluid neighbour is reset to the equilibrium of the surface motion
-//      and its moving-wall links applied, with their momentum exchange.
+//      and its moving-wall links applied, with their momentum exchange; each link's mass excess
+//      over halfway bounce-back goes back to its fluid node's rest population once every link
+//      reading that node has run.
 // A surface node writes only its own populations and reads only fluid ones, so the nodes of pass 4
-// are independent; their loads sum per grain in grain order afterwards (any thread count).
+// are independent; their loads sum per grain in grain order afterwards, and the mass returns
+// reach each node in list order (any thread count).
 #include "solver/coupling/BounceBackCoupling.h"
 
 #include "solver/core/OpenMp.h"
