@@ -228,7 +228,7 @@ void LatticeBoundaryTest::guardNamesStepAndCause() {
                      message.contains("too close to 0.5"),
                  qPrintable(message));
     }
-    // A node at rest with 40 % of its mass gone (a drained sealed pore) stops the run too.
+    // A node at rest with 60 % of its mass gone (a drained sealed pore) stops the run too.
     Lattice drained(setup);
     const long long cell = drained.index(5, 2);
     for (int q = 0; q < kQ; ++q)
