@@ -222,7 +222,7 @@ template <class S> struct InteriorAccess {
 /// Mass: the interpolations return value = out + moving + excess, where halfway bounce-back
 /// (value = out + moving) gives back exactly the mass that left plus the wall's displacement.
 /// The excess is small in open fluid, but in a pore that grains and a wall seal off (the gaps
-/// between hydrodynamic radii are under a node at d_min/h = 6 to 12) it accumulated: a sealed
+/// between hydrodynamic discs are about a node or less at d_min/h = 6) it accumulated: a sealed
 /// pore of the dense 5 deg column drained to rho = 0.14 in 4.6 tau_c, its suction pressed two
 /// floor grains together with 400 times their buoyant weight, and the run diverged
 /// (docs/coupling-methods.md, "Mass in sealed pores"). Each link's excess is appended to
