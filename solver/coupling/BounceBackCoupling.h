@@ -117,12 +117,14 @@ private:
     /// order); loads are summed per grain afterwards in grain order. Returns the link count.
     std::size_t linkSurfaceNodes();
     template <class S> std::size_t linkSurfaceNodesStored(S* stored);
-    /// Return the pending excess of fluid rows up to `upTo` (the links of later rows read no
-    /// further than upTo + 1): from the nodes of rows that only this thread's links touch (from
-    /// firstRow + 2 on, clear of the lattice's edges) at once, the rest to `deferred`.
+    /// Return the pending excess (the first `used` entries of `pending`) of fluid rows up to
+    /// `upTo` (the links of later rows read no further than upTo + 1): from the nodes of rows that
+    /// only this thread's links touch (from firstRow + 2 on, clear of the lattice's edges) at once,
+    /// the rest to `deferred`. Returns how many entries stay pending, moved to the front.
     template <class S>
-    void settleMassExcess(S* stored, std::vector<LinkMassExcess>& pending,
-                          std::vector<LinkMassExcess>& deferred, int upTo, int firstRow) const;
+    std::size_t settleMassExcess(S* stored, std::vector<LinkMassExcess>& pending, std::size_t used,
+                                 std::vector<LinkMassExcess>& deferred, int upTo,
+                                 int firstRow) const;
     /// Take one link's excess back from its fluid node's rest population.
     template <class S> static void returnMassExcess(S* stored, const LinkMassExcess& e);
 
