@@ -125,6 +125,8 @@ public:
     /// other storage), for kernels outside the lattice that address slots themselves.
     double* storedDoubles() { return m_f64.data(); }
     float* storedFloats() { return m_f32.data(); }
+    const double* storedDoubles() const { return m_f64.data(); }
+    const float* storedFloats() const { return m_f32.data(); }
     /// Node flags (kFluid, kSolid, ...) per cell, for kernels outside the lattice.
     const std::uint8_t* flags() const { return m_flags.data(); }
     /// Offset from postSlot(cell, dir) to cell for every node whose neighbours need no wrapping:

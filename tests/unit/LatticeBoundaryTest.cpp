@@ -22,6 +22,8 @@ private slots:
     void closedBoxConservesMass_data();
     void closedBoxConservesMass();
     void guardNamesStepAndCause();
+    void guardFindsTheFirstBadNode_data();
+    void guardFindsTheFirstBadNode();
 
 private:
     static double meanUx(const Lattice& lattice, int j);
@@ -238,6 +240,67 @@ void LatticeBoundaryTest::guardNamesStepAndCause() {
     for (int q = 0; q < kQ; ++q)
         drained.setPopulation(drained.postSlot(cell, q), q, 0.4 * kW[q]);
     expectStop(drained, {"(5, 2)", "density is 0.4", "seal off"});
+}
+
+void LatticeBoundaryTest::guardFindsTheFirstBadNode_data() {
+    QTest::addColumn<int>("storage");
+    QTest::addColumn<int>("steps");
+    for (int storage : {int(PopulationStorage::Double), int(PopulationStorage::Float)})
+        for (int steps : {0, 1})
+            QTest::newRow(
+                qPrintable(QString("%1, %2 steps")
+                               .arg(storage == int(PopulationStorage::Float) ? "float" : "double")
+                               .arg(steps)))
+                << storage << steps;
+}
+
+void LatticeBoundaryTest::guardFindsTheFirstBadNode() {
+    // The guard scans edge nodes through the lattice's accessors and the others at fixed slot
+    // offsets of the step's parity; either way it must name the first bad fluid node in cell
+    // order. Periodic sides: the lattice's edge columns and rows are fluid.
+    QFETCH(int, storage);
+    QFETCH(int, steps);
+    LatticeSetup setup;
+    setup.nx = 12;
+    setup.ny = 10;
+    setup.left.type = setup.right.type = setup.bottom.type = setup.top.type = SideType::Periodic;
+    setup.storage = static_cast<PopulationStorage>(storage);
+    const StabilityGuard guard(1e-3);
+    auto firstBad = [&guard](const Lattice& lattice) -> QString {
+        try {
+            guard.check(lattice);
+        } catch (const SimulationError& error) {
+            const QString message = error.what();
+            const int at = message.indexOf("node (");
+            return message.mid(at, message.indexOf(')', at) - at + 1);
+        }
+        return "none";
+    };
+    // Slow the node down to a stop and scale its mass: rho = scale, u = 0.
+    auto setDensity = [](Lattice& lattice, int i, int j, double scale) {
+        const long long cell = lattice.index(i, j);
+        for (int q = 0; q < kQ; ++q)
+            lattice.setPopulation(lattice.postSlot(cell, q), q, scale * kW[q]);
+    };
+    Lattice lattice(setup);
+    for (int s = 0; s < steps; ++s)
+        lattice.step();
+    QCOMPARE(firstBad(lattice), QString("none"));
+    setDensity(lattice, 6, 7, 2.5); // interior, too dense
+    QCOMPARE(firstBad(lattice), QString("node (6, 7)"));
+    setDensity(lattice, 11, 4, 0.3); // the right edge column, earlier in cell order
+    QCOMPARE(firstBad(lattice), QString("node (11, 4)"));
+    setDensity(lattice, 3, 4, 0.45); // interior, in the same row and earlier still
+    QCOMPARE(firstBad(lattice), QString("node (3, 4)"));
+    setDensity(lattice, 5, 0, 3.0); // the bottom edge row
+    QCOMPARE(firstBad(lattice), QString("node (5, 0)"));
+    // A node just inside the limits passes.
+    Lattice mild(setup);
+    for (int s = 0; s < steps; ++s)
+        mild.step();
+    setDensity(mild, 6, 7, 1.9);
+    setDensity(mild, 0, 5, 0.6);
+    QCOMPARE(firstBad(mild), QString("none"));
 }
 
 QTEST_APPLESS_MAIN(LatticeBoundaryTest)
