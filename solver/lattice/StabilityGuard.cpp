@@ -36,9 +36,8 @@ template <class S> long long firstBadCell(const Lattice& lattice, const S* f, Re
     for (int q = 0; q < kQ; ++q)
         offset[q] = lattice.postSlotOffset(q);
     long long bad = std::numeric_limits<long long>::max();
-#pragma omp parallel for schedule(static)                                                          \
-    reduction(min                                                                                  \
-              : bad) if (lattice.cells() >= kParallelMinCells)
+    const bool parallel = lattice.cells() >= kParallelMinCells;
+#pragma omp parallel for schedule(static) reduction(min : bad) if (parallel)
     for (int j = 0; j < ny; ++j) {
         const bool edgeRow = j == 0 || j == ny - 1;
         for (int i = 0; i < nx; ++i) {
