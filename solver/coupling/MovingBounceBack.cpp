@@ -120,6 +120,7 @@ void BounceBackCoupling::findSurfaceNodes() {
                 int lo = nx, hi = -1;
                 for (int k = std::max(j - 2, 0); k <= std::min(j + 2, ny - 1); ++k)
                     lo = std::min(lo, m_rowFirstColumn[k]), hi = std::max(hi, m_rowLastColumn[k]);
+                if (hi < 0) continue; // no surface node within two rows: stays -1, no prefetch
                 m_prefetchSpan[2 * j] = std::max(lo - 2, 0);
                 m_prefetchSpan[2 * j + 1] = std::min(hi + 2, nx - 1);
             }
