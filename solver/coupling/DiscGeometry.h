@@ -34,7 +34,8 @@ inline Real linkWallFraction(Real px, Real py, int ex, int ey, Real r) {
     const Real b = 2 * (px * ex + py * ey);
     const Real c = px * px + py * py - r * r;
     const Real disc = std::max(b * b - 4 * a * c, Real(0));
-    return std::clamp((-b - std::sqrt(disc)) / (2 * a), Real(0), Real(1));
+    // a is 1 or 2: scaling by 0.5 / a is exactly the division by 2a, without a divide.
+    return std::clamp((-b - std::sqrt(disc)) * (Real(0.5) / a), Real(0), Real(1));
 }
 
 } // namespace lbdem::solver::coupling
