@@ -75,6 +75,12 @@ private:
         int row;
         Real excess;
     };
+    /// The loads of one surface node's links, for a grain whose sum an earlier thread's block
+    /// began: added after the link pass, in list order.
+    struct DeferredLoad {
+        std::int32_t grain;
+        Real fx, fy, torque;
+    };
     /// Node access of the links of surface nodes near the lattice's edges (wrapping, flags and
     /// owners through the lattice and this coupling); defined with the links.
     struct EdgeAccess;
@@ -114,7 +120,7 @@ private:
     void findSurfaceNodes();
     void findGrainSurface(std::size_t p, std::vector<SurfaceNode>& out) const;
     /// Reset every surface node and apply its links, visiting the nodes row by row (memory
-    /// order); loads are summed per grain afterwards in grain order. Returns the link count.
+    /// order); each grain's loads sum in list order. Returns the link count.
     std::size_t linkSurfaceNodes();
     template <class S> std::size_t linkSurfaceNodesStored(S* stored);
     /// Return the pending excess (the first `used` entries of `pending`) of fluid rows up to
@@ -159,8 +165,9 @@ private:
     std::vector<int> m_rowFirstColumn;    // per block of grains and row (block 0: merged)
     std::vector<int> m_rowLastColumn;     // per block of grains and row (block 0: merged)
     std::vector<int> m_prefetchSpan; // per row: first and last column its links' rows may touch
-    std::vector<Real> m_surfaceLoad; // per surface node: (fx, fy, torque) of its links
-    std::vector<std::vector<LinkMassExcess>> m_threadMassExcess; // per thread: for after the pass
+    std::vector<std::int32_t> m_grainFirstEntry; // per grain: its first place in m_surface
+    std::vector<std::vector<DeferredLoad>> m_threadDeferredLoads; // per thread: for after the pass
+    std::vector<std::vector<LinkMassExcess>> m_threadMassExcess;  // per thread: for after the pass
     std::vector<std::vector<LinkMassExcess>> m_threadPendingExcess; // per thread: rows in reach
     std::vector<GrainMotion> m_motion;                              // per grain, this step
     std::size_t m_linkCount = 0;                                    // links of the last mapGrains

@@ -15,8 +15,8 @@
 //      over halfway bounce-back goes back to its fluid node's rest population once every link
 //      reading that node has run.
 // A surface node writes only its own populations and reads only fluid ones, so the nodes of pass 4
-// are independent; their loads sum per grain in grain order afterwards, and the mass returns
-// reach each node in list order (any thread count).
+// are independent; their loads sum per grain in list order, and the mass returns reach each node
+// in list order (any thread count).
 #include "solver/coupling/BounceBackCoupling.h"
 
 #include "solver/core/OpenMp.h"
@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lbdem::solver::coupling {
 
@@ -125,12 +126,22 @@ void BounceBackCoupling::findSurfaceNodes() {
                 m_prefetchSpan[2 * j + 1] = std::min(hi + 2, nx - 1);
             }
             m_surface.resize(static_cast<std::size_t>(m_rowStart[ny]));
+            m_grainFirstEntry.resize(n);
         }
         int* cursor = &m_rowCursor[t * rows];
 #pragma omp for schedule(static)
-        for (long long p = 0; p < static_cast<long long>(n); ++p)
+        for (long long p = 0; p < static_cast<long long>(n); ++p) {
+            // A grain's nodes keep their order within a row, but across a periodic side in y its
+            // later rows come first: its first place is the least.
+            std::int32_t first = std::numeric_limits<std::int32_t>::max();
             for (const SurfaceNode& node : m_grainSurface[p])
-                if (node.inBand) m_surface[cursor[node.j]++] = node;
+                if (node.inBand) {
+                    const int at = cursor[node.j]++;
+                    m_surface[at] = node;
+                    first = std::min(first, at);
+                }
+            m_grainFirstEntry[p] = first;
+        }
     }
 }
 
@@ -395,7 +406,6 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
     const EdgeAccess edge{*this, m_lattice};
     const int nx = m_lattice.nx(), ny = m_lattice.ny();
     const auto count = static_cast<long long>(m_surface.size());
-    m_surfaceLoad.resize(3 * m_surface.size());
     std::size_t links = 0;
     // Static schedule over the row-sorted list: each thread takes a band of rows. While it links
     // the nodes of a row, it requests the lines that the links kPrefetchRows rows further on will
@@ -410,22 +420,34 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
     // part); the deferred ones start empty.
     for (auto* lists : {&m_threadMassExcess, &m_threadPendingExcess})
         if (lists->size() < static_cast<std::size_t>(threads)) lists->resize(threads);
+    if (m_threadDeferredLoads.size() < static_cast<std::size_t>(threads))
+        m_threadDeferredLoads.resize(threads);
     for (auto& list : m_threadMassExcess)
         list.clear();
+    for (auto& list : m_threadDeferredLoads)
+        list.clear();
+    // Each grain's loads sum in list order, which the static schedule splits into the threads'
+    // blocks in thread order. The thread whose block holds a grain's first surface node adds
+    // that grain's loads at once, alone: no earlier block has any, later blocks defer theirs.
+    // The deferred loads follow in thread order after the pass: the same additions in the same
+    // order as one thread's.
+    const std::int32_t* firstEntry = m_grainFirstEntry.data();
 #pragma omp parallel num_threads(threads) reduction(+ : links) if (threads > 1)
     {
         RowPrefetcher<S> prefetch(stored, m_owner.data(), m_lattice, m_prefetchSpan.data());
         auto& deferred = m_threadMassExcess[ompThreadIndex()];
         auto& pending = m_threadPendingExcess[ompThreadIndex()];
+        auto& deferredLoads = m_threadDeferredLoads[ompThreadIndex()];
         ExcessCollector<LinkMassExcess> massExcess{&pending};
-        bool aimed = false; // at the row kPrefetchRows beyond this thread's current row
-        int firstRow = 0;   // of this thread's block
+        bool aimed = false;       // at the row kPrefetchRows beyond this thread's current row
+        int firstRow = 0;         // of this thread's block
+        long long blockStart = 0; // its first place in the list
 #pragma omp for schedule(static)
         for (long long k = 0; k < count; ++k) {
             const SurfaceNode& node = m_surface[k];
             if (!aimed || node.j != m_surface[k - 1].j) {
                 prefetch.aim(node.j + kPrefetchRows, m_rowStart[node.j + 1] - k);
-                if (!aimed) firstRow = node.j;
+                if (!aimed) firstRow = node.j, blockStart = k;
                 aimed = true;
                 massExcess.used = settleMassExcess(stored, pending, massExcess.used, deferred,
                                                    node.j - 2, firstRow);
@@ -440,17 +462,25 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
                                              m.w, loadX, loadY, loadT, massExcess)
                            : linkSurfaceNode(edge, node.cell, node.sx, node.sy, m.r, m.vx, m.vy,
                                              m.w, loadX, loadY, loadT, massExcess);
-            m_surfaceLoad[3 * k] = loadX;
-            m_surfaceLoad[3 * k + 1] = loadY;
-            m_surfaceLoad[3 * k + 2] = loadT;
+            const std::int32_t g = node.grain;
+            if (firstEntry[g] >= blockStart) {
+                m_loadX[g] += loadX;
+                m_loadY[g] += loadY;
+                m_loadT[g] += loadT;
+            } else {
+                deferredLoads.push_back({g, loadX, loadY, loadT});
+            }
         }
         // The last rows' nodes may be read by the next thread's links.
         deferred.insert(deferred.end(), pending.begin(),
                         pending.begin() + static_cast<std::ptrdiff_t>(massExcess.used));
     }
-    // Per grain in list order: fixed by the grains' positions, whatever the thread count.
-    addEntryLoads(m_surfaceLoad, m_surface.size(),
-                  [this](std::size_t k) { return m_surface[k].grain; });
+    for (const auto& list : m_threadDeferredLoads)
+        for (const DeferredLoad& d : list) {
+            m_loadX[d.grain] += d.fx;
+            m_loadY[d.grain] += d.fy;
+            m_loadT[d.grain] += d.torque;
+        }
     // The static schedule gave thread t the t-th block of the surface list: the lists in thread
     // order keep each node's returns in list order.
     for (const auto& list : m_threadMassExcess)
