@@ -75,6 +75,15 @@ private:
         int row;
         Real excess;
     };
+    /// A thread's link mass excess still waiting for readers: one list per fluid row, in a ring
+    /// by row. Before the links of surface row j run, the rows up to j - 2 are settled, and those
+    /// links reach rows j - 1 .. j + 1: at most three rows wait at once, fewer than kRows, so each
+    /// list holds one row. The lists keep their length from step to step (the pass counts the
+    /// filled part); cache lines of its own per thread.
+    struct alignas(64) PendingExcess {
+        static constexpr int kRows = 4; // a power of two: the slot of row r is r & (kRows - 1)
+        std::vector<LinkMassExcess> list[kRows];
+    };
     /// The loads of one surface node's links, for a grain whose sum an earlier thread's block
     /// began: added after the link pass, in list order.
     struct DeferredLoad {
@@ -123,14 +132,13 @@ private:
     /// order); each grain's loads sum in list order. Returns the link count.
     std::size_t linkSurfaceNodes();
     template <class S> std::size_t linkSurfaceNodesStored(S* stored);
-    /// Return the pending excess (the first `used` entries of `pending`) of fluid rows up to
+    /// Return the pending excess (the first used[slot] entries of each list) of fluid rows up to
     /// `upTo` (the links of later rows read no further than upTo + 1): from the nodes of rows that
     /// only this thread's links touch (from firstRow + 2 on, clear of the lattice's edges) at once,
-    /// the rest to `deferred`. Returns how many entries stay pending, moved to the front.
+    /// the rest to `deferred`.
     template <class S>
-    std::size_t settleMassExcess(S* stored, std::vector<LinkMassExcess>& pending, std::size_t used,
-                                 std::vector<LinkMassExcess>& deferred, int upTo,
-                                 int firstRow) const;
+    void settleMassExcess(S* stored, const PendingExcess& pending, std::size_t* used,
+                          std::vector<LinkMassExcess>& deferred, int upTo, int firstRow) const;
     /// Take one link's excess back from its fluid node's rest population.
     template <class S> static void returnMassExcess(S* stored, const LinkMassExcess& e);
 
@@ -168,9 +176,9 @@ private:
     std::vector<std::int32_t> m_grainFirstEntry; // per grain: its first place in m_surface
     std::vector<std::vector<DeferredLoad>> m_threadDeferredLoads; // per thread: for after the pass
     std::vector<std::vector<LinkMassExcess>> m_threadMassExcess;  // per thread: for after the pass
-    std::vector<std::vector<LinkMassExcess>> m_threadPendingExcess; // per thread: rows in reach
-    std::vector<GrainMotion> m_motion;                              // per grain, this step
-    std::size_t m_linkCount = 0;                                    // links of the last mapGrains
+    std::vector<PendingExcess> m_threadPendingExcess;             // per thread: rows in reach
+    std::vector<GrainMotion> m_motion;                            // per grain, this step
+    std::size_t m_linkCount = 0;                                  // links of the last mapGrains
     std::vector<Real> m_previousLoad; // (fx, fy, torque) per grain of the step before
 };
 

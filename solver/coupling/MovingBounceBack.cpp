@@ -298,18 +298,23 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
     return links;
 }
 
-/// Where linkSurfaceNode leaves each link's excess mass: the first `used` entries of the thread's
-/// pending list, with the lattice row of the fluid node (that of the surface node plus the link's
-/// c_y; outside the lattice where it wraps, which settleMassExcess treats as an edge row). The list
-/// only grows, on a cold path, so that a link's append is a compare and a store: push_back, which
-/// the compiler left out of line, took 2.5 % of a paper run's samples beside the link pass's 13 %.
-template <class Entry> struct ExcessCollector {
-    std::vector<Entry>* pending;
-    std::size_t used = 0;
+/// Where linkSurfaceNode leaves each link's excess mass: the thread's pending list of the fluid
+/// node's lattice row (that of the surface node plus the link's c_y; outside the lattice where it
+/// wraps, which settleMassExcess treats as an edge row). With a list per row, settling a row
+/// touches its own entries only, where one list for all rows was scanned whole on every row (the
+/// grain mapping of the paper case ran a tenth faster, docs/performance.md). The lists only grow,
+/// on a cold path, so that a link's append is a compare and a store: push_back, which the compiler
+/// left out of line, took 2.5 % of a paper run's samples beside the link pass's 13 %.
+template <class Pending> struct ExcessCollector {
+    Pending* pending;
+    std::size_t used[Pending::kRows] = {}; // on the thread's stack: written by every add
     int surfaceRow = 0;
     void add(long long fluid, int back, Real excess) {
-        if (used == pending->size()) pending->resize(2 * used + 256);
-        (*pending)[used++] = {fluid, surfaceRow + kCy[back], excess};
+        const int row = surfaceRow + kCy[back];
+        const int slot = row & (Pending::kRows - 1);
+        auto& list = pending->list[slot];
+        if (used[slot] == list.size()) list.resize(2 * used[slot] + 256);
+        list[used[slot]++] = {fluid, row, excess};
     }
 };
 
@@ -418,10 +423,10 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
     const int threads = count >= kParallelMin ? ompMaxThreads() : 1;
     // The pending lists keep their length from step to step (ExcessCollector counts the used
     // part); the deferred ones start empty.
-    for (auto* lists : {&m_threadMassExcess, &m_threadPendingExcess})
-        if (lists->size() < static_cast<std::size_t>(threads)) lists->resize(threads);
-    if (m_threadDeferredLoads.size() < static_cast<std::size_t>(threads))
-        m_threadDeferredLoads.resize(threads);
+    const auto perThread = static_cast<std::size_t>(threads);
+    if (m_threadMassExcess.size() < perThread) m_threadMassExcess.resize(perThread);
+    if (m_threadPendingExcess.size() < perThread) m_threadPendingExcess.resize(perThread);
+    if (m_threadDeferredLoads.size() < perThread) m_threadDeferredLoads.resize(perThread);
     for (auto& list : m_threadMassExcess)
         list.clear();
     for (auto& list : m_threadDeferredLoads)
@@ -438,7 +443,7 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
         auto& deferred = m_threadMassExcess[ompThreadIndex()];
         auto& pending = m_threadPendingExcess[ompThreadIndex()];
         auto& deferredLoads = m_threadDeferredLoads[ompThreadIndex()];
-        ExcessCollector<LinkMassExcess> massExcess{&pending};
+        ExcessCollector<PendingExcess> massExcess{&pending};
         bool aimed = false;       // at the row kPrefetchRows beyond this thread's current row
         int firstRow = 0;         // of this thread's block
         long long blockStart = 0; // its first place in the list
@@ -449,8 +454,7 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
                 prefetch.aim(node.j + kPrefetchRows, m_rowStart[node.j + 1] - k);
                 if (!aimed) firstRow = node.j, blockStart = k;
                 aimed = true;
-                massExcess.used = settleMassExcess(stored, pending, massExcess.used, deferred,
-                                                   node.j - 2, firstRow);
+                settleMassExcess(stored, pending, massExcess.used, deferred, node.j - 2, firstRow);
                 massExcess.surfaceRow = node.j;
             }
             prefetch.next();
@@ -472,8 +476,11 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
             }
         }
         // The last rows' nodes may be read by the next thread's links.
-        deferred.insert(deferred.end(), pending.begin(),
-                        pending.begin() + static_cast<std::ptrdiff_t>(massExcess.used));
+        for (int slot = 0; slot < PendingExcess::kRows; ++slot) {
+            const auto& list = pending.list[slot];
+            deferred.insert(deferred.end(), list.begin(),
+                            list.begin() + static_cast<std::ptrdiff_t>(massExcess.used[slot]));
+        }
     }
     for (const auto& list : m_threadDeferredLoads)
         for (const DeferredLoad& d : list) {
@@ -490,24 +497,26 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
 }
 
 template <class S>
-std::size_t BounceBackCoupling::settleMassExcess(S* stored, std::vector<LinkMassExcess>& pending,
-                                                 std::size_t used,
-                                                 std::vector<LinkMassExcess>& deferred, int upTo,
-                                                 int firstRow) const {
+void BounceBackCoupling::settleMassExcess(S* stored, const PendingExcess& pending,
+                                          std::size_t* used, std::vector<LinkMassExcess>& deferred,
+                                          int upTo, int firstRow) const {
     // Fluid rows within kEdgeRows of the lattice's edges may be linked across a periodic side.
     constexpr int kEdgeRows = 3;
     const int lastOwn = m_lattice.ny() - kEdgeRows;
-    std::size_t kept = 0;
-    for (std::size_t n = 0; n < used; ++n) {
-        const LinkMassExcess& e = pending[n];
-        if (e.row > upTo)
-            pending[kept++] = e;
-        else if (e.row >= firstRow + 2 && e.row >= kEdgeRows && e.row < lastOwn)
-            returnMassExcess(stored, e);
+    // Each list holds one row, its entries in list order: a node's returns keep that order.
+    for (int slot = 0; slot < PendingExcess::kRows; ++slot) {
+        if (used[slot] == 0) continue;
+        const std::vector<LinkMassExcess>& list = pending.list[slot];
+        const int row = list[0].row;
+        if (row > upTo) continue;
+        if (row >= firstRow + 2 && row >= kEdgeRows && row < lastOwn)
+            for (std::size_t n = 0; n < used[slot]; ++n)
+                returnMassExcess(stored, list[n]);
         else
-            deferred.push_back(e);
+            deferred.insert(deferred.end(), list.begin(),
+                            list.begin() + static_cast<std::ptrdiff_t>(used[slot]));
+        used[slot] = 0;
     }
-    return kept;
 }
 
 template <class S> void BounceBackCoupling::returnMassExcess(S* stored, const LinkMassExcess& e) {
