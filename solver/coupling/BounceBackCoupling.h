@@ -79,7 +79,7 @@ private:
     /// by row. Before the links of surface row j run, the rows up to j - 2 are settled, and those
     /// links reach rows j - 1 .. j + 1: at most three rows wait at once, fewer than kRows, so each
     /// list holds one row. The lists keep their length from step to step (the pass counts the
-    /// filled part); cache lines of its own per thread.
+    /// filled part). Aligned to a cache line: no two threads' lists share one.
     struct alignas(64) PendingExcess {
         static constexpr int kRows = 4; // a power of two: the slot of row r is r & (kRows - 1)
         std::vector<LinkMassExcess> list[kRows];
