@@ -83,6 +83,11 @@ private:
     struct alignas(64) PendingExcess {
         static constexpr int kRows = 4; // a power of two: the slot of row r is r & (kRows - 1)
         std::vector<LinkMassExcess> list[kRows];
+        /// Append the first `used` entries of list[slot] to `out`.
+        void appendTo(int slot, std::size_t used, std::vector<LinkMassExcess>& out) const {
+            out.insert(out.end(), list[slot].begin(),
+                       list[slot].begin() + static_cast<std::ptrdiff_t>(used));
+        }
     };
     /// The loads of one surface node's links, for a grain whose sum an earlier thread's block
     /// began: added after the link pass, in list order.

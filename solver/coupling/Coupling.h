@@ -118,12 +118,14 @@ protected:
     template <class GrainOf>
     void addEntryLoads(const std::vector<Real>& entryLoads, std::size_t entries,
                        const GrainOf& grainOf) {
-        for (std::size_t k = 0; k < entries; ++k) {
-            const std::int32_t g = grainOf(k);
-            m_loadX[g] += entryLoads[3 * k];
-            m_loadY[g] += entryLoads[3 * k + 1];
-            m_loadT[g] += entryLoads[3 * k + 2];
-        }
+        for (std::size_t k = 0; k < entries; ++k)
+            addLoad(grainOf(k), entryLoads[3 * k], entryLoads[3 * k + 1], entryLoads[3 * k + 2]);
+    }
+    /// Add one contribution (lattice units) to the loads of grain g.
+    void addLoad(std::int32_t g, Real fx, Real fy, Real torque) {
+        m_loadX[g] += fx;
+        m_loadY[g] += fy;
+        m_loadT[g] += torque;
     }
     /// Size the per-grain loads for the current grain count; true when it changed.
     bool resizeGrains();
