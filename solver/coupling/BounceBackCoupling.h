@@ -115,6 +115,9 @@ private:
     template <class Item, class Visit>
     void collectPerGrain(std::vector<std::vector<Item>>& lists, const Visit& visit);
     void findChanges();
+    /// Request the owner lines (and the flag lines with `flags`) of the rows of `box` (the part
+    /// within the lattice), which the scan of a grain is about to read.
+    void prefetchBox(const Box& box, bool flags) const;
     /// Owner changes of grain p: none without a scan when it is still within reach of its quiet
     /// anchor, otherwise a scan of its boxes (which sets or drops the anchor).
     void findGrainChanges(std::size_t p, std::vector<Change>& out);

@@ -149,8 +149,27 @@ void BounceBackCoupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0
     }
 }
 
+void BounceBackCoupling::prefetchBox(const Box& box, bool flags) const {
+    constexpr int kOwnersPerLine = 64 / static_cast<int>(sizeof(std::int32_t));
+    constexpr int kFlagsPerLine = 64;
+    const int i0 = std::max(box.i0, 0), i1 = std::min(box.i1, m_lattice.nx() - 1);
+    const int j0 = std::max(box.j0, 0), j1 = std::min(box.j1, m_lattice.ny() - 1);
+    if (i0 > i1) return;
+    for (int j = j0; j <= j1; ++j) {
+        const long long row = m_lattice.index(0, j);
+        for (int i = i0; i <= i1 + kOwnersPerLine - 1; i += kOwnersPerLine)
+            __builtin_prefetch(m_owner.data() + row + std::min(i, i1), 0);
+        for (int i = i0; flags && i <= i1 + kFlagsPerLine - 1; i += kFlagsPerLine)
+            __builtin_prefetch(m_lattice.flags() + row + std::min(i, i1), 0);
+    }
+}
+
 void BounceBackCoupling::findChanges() {
-    collectPerGrain(m_threadChanges, [this](std::size_t p, std::vector<Change>& out) {
+    const std::size_t n = m_dem.particles().size();
+    collectPerGrain(m_threadChanges, [this, n](std::size_t p, std::vector<Change>& out) {
+        // The rows of the next grain's last box arrive while this one is scanned: a grain's scan
+        // otherwise waits on each of its rows in turn.
+        if (p + 1 < n) prefetchBox(m_box[p + 1], true);
         findGrainChanges(p, out);
         m_box[p] = grainBox(p);
     });

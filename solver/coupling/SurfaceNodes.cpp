@@ -45,6 +45,9 @@ void BounceBackCoupling::findSurfaceNodes() {
 #pragma omp for schedule(static)
         for (long long p = 0; p < static_cast<long long>(n); ++p) {
             std::vector<SurfaceNode>& list = m_grainSurface[p];
+            // The owners of the next grain's rows arrive while this one is handled.
+            if (p + 1 < static_cast<long long>(n) && !m_unmoved[p + 1])
+                prefetchBox(m_box[p + 1], false);
             if (m_unmoved[p]) {
                 Real cx, cy, radius;
                 grainGeometry(static_cast<std::size_t>(p), cx, cy, radius);
