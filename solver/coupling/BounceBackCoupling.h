@@ -175,7 +175,9 @@ private:
     std::vector<QuietAnchor> m_anchor;                // per grain: see QuietAnchor
     std::vector<std::uint8_t> m_unmoved; // per grain: 1 when this step kept its anchor's nodes
     std::vector<std::vector<SurfaceNode>> m_grainSurface; // per grain, row by row
-    std::vector<SurfaceNode> m_surface;   // surface nodes of all grains, row by row (grain order)
+    // Surface nodes of all grains, row by row (grain order): pointers into m_grainSurface, which
+    // the sort places as 8 bytes each where copies took 48 (docs/performance.md).
+    std::vector<const SurfaceNode*> m_surface;
     std::vector<std::int32_t> m_rowStart; // counting sort of m_surface by row
     std::vector<int> m_rowCursor;         // per block of grains and row: count, then next place
     std::vector<int> m_rowFirstColumn;    // per block of grains and row (block 0: merged)

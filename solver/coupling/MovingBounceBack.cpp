@@ -260,7 +260,8 @@ std::size_t BounceBackCoupling::linkSurfaceNodes() {
 }
 
 template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* stored) {
-    constexpr int kPrefetchRows = 5; // the links of row j touch rows j - 2 .. j + 2
+    constexpr int kPrefetchRows = 5;     // the links of row j touch rows j - 2 .. j + 2
+    constexpr long long kNodesAhead = 8; // m_surface points into the grains' lists: requested ahead
     InteriorAccess<S> interior{stored, m_lattice.flags(), m_owner.data(), {}, {}};
     for (int q = 0; q < kQ; ++q) {
         interior.slot[q] = m_lattice.postSlotOffset(q);
@@ -307,8 +308,9 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
         long long blockStart = 0; // its first place in the list
 #pragma omp for schedule(static)
         for (long long k = 0; k < count; ++k) {
-            const SurfaceNode& node = m_surface[k];
-            if (!aimed || node.j != m_surface[k - 1].j) {
+            if (k + kNodesAhead < count) __builtin_prefetch(m_surface[k + kNodesAhead], 0);
+            const SurfaceNode& node = *m_surface[k];
+            if (!aimed || node.j != m_surface[k - 1]->j) {
                 prefetch.aim(node.j + kPrefetchRows, m_rowStart[node.j + 1] - k);
                 if (!aimed) firstRow = node.j, blockStart = k;
                 aimed = true;

@@ -104,7 +104,7 @@ void BounceBackCoupling::findSurfaceNodes() {
             for (const SurfaceNode& node : m_grainSurface[p])
                 if (node.inBand) {
                     const int at = cursor[node.j]++;
-                    m_surface[at] = node;
+                    m_surface[at] = &node;
                     first = std::min(first, at);
                 }
             m_grainFirstEntry[p] = first;
