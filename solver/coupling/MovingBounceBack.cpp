@@ -121,8 +121,10 @@ int linkSurfaceNode(const Access& a, long long cell, Real sx, Real sy, Real r, R
         wallFraction[back] =
             linkWallFraction(sx + kCx[back], sy + kCy[back], -kCx[back], -kCy[back], r);
     int links = 0;
-    for (int back = 1; back < kQ; ++back) { // fluid node x_f = solid + c_back
-        if (!(open >> back & 1u)) continue;
+    // The open directions in turn, lowest first: a loop exit to predict instead of a branch per
+    // direction (links 2.33-2.43 -> 2.25-2.28 ms per step on the paper case).
+    for (unsigned left = open; left != 0; left &= left - 1) {
+        const int back = __builtin_ctz(left); // fluid node x_f = solid + c_back
         const long long fluid = a.neighbour(cell, back);
         const int toward = kOpposite[back];
         const Real px = sx + kCx[back], py = sy + kCy[back];
