@@ -13,6 +13,16 @@
 
 namespace lbdem::solver::coupling {
 
+/// Request, for reading, every cache line that holds base[first] .. base[last] (first <= last: a
+/// span of one lattice row of owners or flags, which the grain passes read next).
+template <class T> inline void prefetchLines(const T* base, int first, int last) {
+    constexpr std::uintptr_t kLine = 64;
+    const auto end = reinterpret_cast<std::uintptr_t>(base + last);
+    for (auto at = reinterpret_cast<std::uintptr_t>(base + first) & ~(kLine - 1); at <= end;
+         at += kLine)
+        __builtin_prefetch(reinterpret_cast<const void*>(at), 0);
+}
+
 /// The bounce-back coupling: each grain owns the nodes inside its hydrodynamic radius, which are
 /// solid to the fluid; its surface nodes carry the moving-wall links. Built by makeCoupling.
 class BounceBackCoupling final : public Coupling {

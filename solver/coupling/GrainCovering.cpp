@@ -150,17 +150,13 @@ void BounceBackCoupling::scanRow(std::int32_t id, int ju, int j, Real dy, int i0
 }
 
 void BounceBackCoupling::prefetchBox(const Box& box, bool flags) const {
-    constexpr int kOwnersPerLine = 64 / static_cast<int>(sizeof(std::int32_t));
-    constexpr int kFlagsPerLine = 64;
     const int i0 = std::max(box.i0, 0), i1 = std::min(box.i1, m_lattice.nx() - 1);
     const int j0 = std::max(box.j0, 0), j1 = std::min(box.j1, m_lattice.ny() - 1);
     if (i0 > i1) return;
     for (int j = j0; j <= j1; ++j) {
         const long long row = m_lattice.index(0, j);
-        for (int i = i0; i <= i1 + kOwnersPerLine - 1; i += kOwnersPerLine)
-            __builtin_prefetch(m_owner.data() + row + std::min(i, i1), 0);
-        for (int i = i0; flags && i <= i1 + kFlagsPerLine - 1; i += kFlagsPerLine)
-            __builtin_prefetch(m_lattice.flags() + row + std::min(i, i1), 0);
+        prefetchLines(m_owner.data() + row, i0, i1);
+        if (flags) prefetchLines(m_lattice.flags() + row, i0, i1);
     }
 }
 

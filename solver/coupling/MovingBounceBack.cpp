@@ -199,10 +199,8 @@ public:
         m_first = m_span[2 * row];
         m_last = m_span[2 * row + 1];
         const long long rowStart = m_lattice.index(0, row);
-        for (int i = m_first; i <= m_last; i += kOwnersPerLine)
-            __builtin_prefetch(m_owner + rowStart + i, 0);
-        for (int i = m_first; i <= m_last; i += kFlagsPerLine)
-            __builtin_prefetch(m_lattice.flags() + rowStart + i, 0);
+        prefetchLines(m_owner + rowStart, m_first, m_last);
+        prefetchLines(m_lattice.flags() + rowStart, m_first, m_last);
         m_row = m_stored + rowStart;
         m_q = 0;
         m_i = m_first;
@@ -214,8 +212,6 @@ public:
 
 private:
     static constexpr int kPerLine = 64 / static_cast<int>(sizeof(S));
-    static constexpr int kOwnersPerLine = 64 / static_cast<int>(sizeof(std::int32_t));
-    static constexpr int kFlagsPerLine = 64 / static_cast<int>(sizeof(std::uint8_t));
     void next(long long count) {
         for (; count > 0 && m_q < kQ; --count, --m_left) {
             __builtin_prefetch(m_row + m_q * m_lattice.cells() + m_i, 1);
