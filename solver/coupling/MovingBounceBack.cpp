@@ -19,12 +19,14 @@
 // in list order (any thread count).
 #include "solver/coupling/BounceBackCoupling.h"
 
+#include "solver/core/FlushSubnormals.h"
 #include "solver/core/OpenMp.h"
 #include "solver/coupling/DiscGeometry.h"
 #include "solver/lattice/D2Q9.h"
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace lbdem::solver::coupling {
 
@@ -296,6 +298,8 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
     const std::int32_t* firstEntry = m_grainFirstEntry.data();
 #pragma omp parallel num_threads(threads) reduction(+ : links) if (threads > 1)
     {
+        // Float deviations of still fluid may be subnormal (solver/core/FlushSubnormals.h).
+        const ScopedFlushSubnormals flush(std::is_same_v<S, float>);
         RowPrefetcher<S> prefetch(stored, m_owner.data(), m_lattice, m_prefetchSpan.data());
         auto& deferred = m_threadMassExcess[ompThreadIndex()];
         auto& pending = m_threadPendingExcess[ompThreadIndex()];

@@ -1,11 +1,13 @@
 // The sponge layer: which nodes it covers, their strength, and the relaxation pass.
 #include "solver/lattice/AbsorbingLayer.h"
 
+#include "solver/core/FlushSubnormals.h"
 #include "solver/core/InputError.h"
 #include "solver/lattice/Lattice.h"
 
 #include <algorithm>
 #include <string>
+#include <type_traits>
 
 namespace lbdem::solver::lattice {
 
@@ -86,28 +88,33 @@ template <class S> void AbsorbingLayer::relaxStored(Lattice& lattice, S* stored)
     // Each node changes only its own populations: any order and thread count give the same
     // result, so the runs (a few long ones along the top, many short ones along the right side)
     // are dealt out as the threads come free.
-#pragma omp parallel for schedule(dynamic, 4) if (m_cells.size() * 16 >= kParallelMinCells)
-    for (long long r = 0; r < runs; ++r) {
-        const Run& run = m_runs[r];
-        const Real* sigma = m_sigma.data() + run.firstIndex;
-        if (run.interior) {
-            // Consecutive cells whose neighbours need no wrapping: each direction's slots are
-            // consecutive too, at the parity's fixed offset.
-            S* slot[kQ];
-            for (int q = 0; q < kQ; ++q)
-                slot[q] = stored + run.firstCell + offset[q];
+#pragma omp parallel if (m_cells.size() * 16 >= kParallelMinCells)
+    {
+        // Near rest, float deviations fall below float's least normal number (FlushSubnormals.h).
+        const ScopedFlushSubnormals flush(std::is_same_v<S, float>);
+#pragma omp for schedule(dynamic, 4)
+        for (long long r = 0; r < runs; ++r) {
+            const Run& run = m_runs[r];
+            const Real* sigma = m_sigma.data() + run.firstIndex;
+            if (run.interior) {
+                // Consecutive cells whose neighbours need no wrapping: each direction's slots are
+                // consecutive too, at the parity's fixed offset.
+                S* slot[kQ];
+                for (int q = 0; q < kQ; ++q)
+                    slot[q] = stored + run.firstCell + offset[q];
 #pragma omp simd
-            for (int c = 0; c < run.count; ++c)
-                relaxStoredNode(slot, c, sigma[c], rest);
-            continue;
-        }
-        for (int c = 0; c < run.count; ++c) {
-            long long slots[kQ];
-            lattice.postSlots(run.firstCell + c, slots);
-            S* slot[kQ];
-            for (int q = 0; q < kQ; ++q)
-                slot[q] = stored + slots[q];
-            relaxStoredNode(slot, 0, sigma[c], rest);
+                for (int c = 0; c < run.count; ++c)
+                    relaxStoredNode(slot, c, sigma[c], rest);
+                continue;
+            }
+            for (int c = 0; c < run.count; ++c) {
+                long long slots[kQ];
+                lattice.postSlots(run.firstCell + c, slots);
+                S* slot[kQ];
+                for (int q = 0; q < kQ; ++q)
+                    slot[q] = stored + slots[q];
+                relaxStoredNode(slot, 0, sigma[c], rest);
+            }
         }
     }
 }

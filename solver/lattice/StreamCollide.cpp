@@ -1,6 +1,7 @@
 // The time step: boundary passes, then the fused stream-collide kernel of the AA pattern.
 #include "solver/lattice/Lattice.h"
 
+#include "solver/core/FlushSubnormals.h"
 #include "solver/core/OpenMp.h"
 
 #include <type_traits>
@@ -13,9 +14,12 @@ namespace {
 /// Run row(y) once for every row y < ny, each thread first its share of the rows above `last`,
 /// then its share of the rows 0..last: every thread ends in the rows up to `last`, which are then
 /// the freshest in the shared cache (Lattice::setLastSweptRow). Static shares, as schedule(static).
-template <class Row> void sweepRows(int ny, int last, bool parallel, const Row& row) {
+/// With `flushSubnormals` (float storage) each thread reads and writes subnormals as zero.
+template <class Row>
+void sweepRows(int ny, int last, bool parallel, bool flushSubnormals, const Row& row) {
 #pragma omp parallel if (parallel)
     {
+        const ScopedFlushSubnormals flush(flushSubnormals);
         const int threads = ompThreadCount(), t = ompThreadIndex();
         const int above = ny - 1 - last, band = last + 1;
         for (int y = last + 1 + above * t / threads; y < last + 1 + above * (t + 1) / threads; ++y)
@@ -45,7 +49,8 @@ template <class S, class C> LBDEM_KERNEL_INLINE void collideStored(const C& coll
 template <bool kStream, class S, class C>
 void aaSweep(S* __restrict f, int nx, int ny, long long cells, int lastRow, const C& collide) {
     sweepRows(
-        ny, lastRow, cells >= kParallelMinCells, [&](int y) __attribute__((always_inline)) {
+        ny, lastRow, cells >= kParallelMinCells,
+        std::is_same_v<S, float>, [&](int y) __attribute__((always_inline)) {
             const long long row = static_cast<long long>(y) * nx;
             long long rowN = row, rowS = row;
             if (kStream) {
