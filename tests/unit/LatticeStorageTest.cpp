@@ -281,10 +281,11 @@ void LatticeStorageTest::importRefusesWrongSize() {
 
 void LatticeStorageTest::floatStepLeavesNoSubnormals() {
     // Still fluid holds float deviations below float's least normal number (1.2e-38), as here
-    // (and the Smagorinsky model squares deviations of 1e-20 into that range); arithmetic on such
-    // subnormal numbers is some hundred times slower on x86 (the paper case's float stream-collide took
-    // 5.5 instead of 2.5 ms per step, docs/performance.md "Subnormal floats"). The float kernel
-    // reads and writes them as zero, and leaves the thread's arithmetic as it found it.
+    // (and the Smagorinsky model squares deviations of 1e-20 into that range); arithmetic on
+    // such subnormal numbers is some hundred times slower on x86 (the paper case's float
+    // stream-collide took 5.5 instead of 2.5 ms per step, docs/performance.md "Subnormal
+    // floats"). The float kernel reads and writes them as zero, and leaves the thread's
+    // arithmetic as it found it.
 #ifndef LBDEM_HAS_MXCSR
     QSKIP("no MXCSR on this processor: subnormals are not flushed here");
 #endif
