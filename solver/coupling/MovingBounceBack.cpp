@@ -26,7 +26,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 namespace lbdem::solver::coupling {
 
@@ -298,8 +297,7 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
     const std::int32_t* firstEntry = m_grainFirstEntry.data();
 #pragma omp parallel num_threads(threads) reduction(+ : links) if (threads > 1)
     {
-        // Float deviations of still fluid may be subnormal (solver/core/FlushSubnormals.h).
-        const ScopedFlushSubnormals flush(std::is_same_v<S, float>);
+        const ScopedFlushSubnormals flush(lattice::StoredPopulation<S>::kFlushSubnormals);
         RowPrefetcher<S> prefetch(stored, m_owner.data(), m_lattice, m_prefetchSpan.data());
         auto& deferred = m_threadMassExcess[ompThreadIndex()];
         auto& pending = m_threadPendingExcess[ompThreadIndex()];

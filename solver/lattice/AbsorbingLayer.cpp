@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <string>
-#include <type_traits>
 
 namespace lbdem::solver::lattice {
 
@@ -90,8 +89,7 @@ template <class S> void AbsorbingLayer::relaxStored(Lattice& lattice, S* stored)
     // are dealt out as the threads come free.
 #pragma omp parallel if (m_cells.size() * 16 >= kParallelMinCells)
     {
-        // Near rest, float deviations fall below float's least normal number (FlushSubnormals.h).
-        const ScopedFlushSubnormals flush(std::is_same_v<S, float>);
+        const ScopedFlushSubnormals flush(StoredPopulation<S>::kFlushSubnormals);
 #pragma omp for schedule(dynamic, 4)
         for (long long r = 0; r < runs; ++r) {
             const Run& run = m_runs[r];

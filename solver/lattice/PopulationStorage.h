@@ -29,6 +29,9 @@ template <class S> struct StoredPopulation;
 
 /// Double storage: the population itself.
 template <> struct StoredPopulation<double> {
+    /// Whether the passes over these values read and write subnormal numbers as zero: never
+    /// reached in double (its least normal number is 2.2e-308).
+    static constexpr bool kFlushSubnormals = false;
     /// The population held by a stored value.
     static LBDEM_KERNEL_INLINE double load(double stored, double) { return stored; }
     /// The value that stores population f.
@@ -37,6 +40,10 @@ template <> struct StoredPopulation<double> {
 
 /// Float storage: the deviation f_i - w_i, widened to double for the accessors and boundary passes.
 template <> struct StoredPopulation<float> {
+    /// Still fluid's deviations fall below float's least normal number (1.2e-38), where each
+    /// operation costs a microcode assist: the passes over these values flush them
+    /// (solver/core/FlushSubnormals.h).
+    static constexpr bool kFlushSubnormals = true;
     /// The population held by a stored deviation.
     static LBDEM_KERNEL_INLINE double load(float stored, double w) {
         return static_cast<double>(stored) + w;

@@ -14,7 +14,8 @@ namespace {
 /// Run row(y) once for every row y < ny, each thread first its share of the rows above `last`,
 /// then its share of the rows 0..last: every thread ends in the rows up to `last`, which are then
 /// the freshest in the shared cache (Lattice::setLastSweptRow). Static shares, as schedule(static).
-/// With `flushSubnormals` (float storage) each thread reads and writes subnormals as zero.
+/// With `flushSubnormals` (StoredPopulation::kFlushSubnormals) each thread reads and writes
+/// subnormals as zero.
 template <class Row>
 void sweepRows(int ny, int last, bool parallel, bool flushSubnormals, const Row& row) {
 #pragma omp parallel if (parallel)
@@ -50,7 +51,7 @@ template <bool kStream, class S, class C>
 void aaSweep(S* __restrict f, int nx, int ny, long long cells, int lastRow, const C& collide) {
     sweepRows(
         ny, lastRow, cells >= kParallelMinCells,
-        std::is_same_v<S, float>, [&](int y) __attribute__((always_inline)) {
+        StoredPopulation<S>::kFlushSubnormals, [&](int y) __attribute__((always_inline)) {
             const long long row = static_cast<long long>(y) * nx;
             long long rowN = row, rowS = row;
             if (kStream) {
