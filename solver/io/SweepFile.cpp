@@ -53,9 +53,13 @@ std::vector<int> seedArray(const toml::node& node, const std::string& path,
     return seeds;
 }
 
-/// A variant's name: letters, digits, '_' and '-' (it becomes part of a folder name).
+/// A variant's name: letters, digits, '_' and '-' (it becomes part of a folder name), neither
+/// starting with '_' nor holding "__". Then the last "__" of CASE__VARIANT is the one between
+/// them, so that two (case, variant) pairs never share a folder (case a with variant b__c and
+/// case a__b with variant c would) and the table can tell the case from the variant.
 bool isVariantName(const std::string& name) {
-    return !name.empty() && name.size() <= 64 &&
+    return !name.empty() && name.size() <= 64 && name.front() != '_' &&
+           name.find("__") == std::string::npos &&
            std::all_of(name.begin(), name.end(),
                        [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
 }
@@ -79,7 +83,9 @@ std::vector<SweepVariant> variantArray(const toml::node& node, const std::string
                 variant.name = value.value<std::string>().value_or("");
                 if (!isVariantName(variant.name))
                     throw InputError(path, keyLine, "variants.name",
-                                     "expected 1-64 letters, digits, '_' or '-'");
+                                     "expected 1-64 letters, digits, '_' or '-', not starting "
+                                     "with '_' and without '__' (which separates the case's "
+                                     "name from the variant's in OUT/CASE__VARIANT)");
             } else if (name == "set") {
                 variant.overrides = stringArray(value, path, "variants.set");
             } else {

@@ -59,6 +59,19 @@ variant_refused("[[variants]]\nname = \"a\"\n[[variants]]\nname = \"a\"\n" "swee
 variant_refused("[[variants]]\nname = \"a\"\nsett = []\n" "sweep.toml:5.*variants.sett.*did you mean 'set'")
 variant_refused("variants = 3\n" "sweep.toml:3.*variants")
 variant_refused("[[variants]]\nname = \"a\"\nset = [\"grains.cuont=3\"]\n" "cuont")
+# Folder names must not collide through variants: case a with variant b__c and case a__b with
+# variant c would both run into OUT/a__b__c, and so would case a_ with b and case a with _b.
+write_case(a.toml a "")
+write_case(ab.toml a__b "")
+file(WRITE "${OUT}/sweep.toml" "sweep = 1\ncases = [\"a.toml\", \"ab.toml\"]\n"
+           "[[variants]]\nname = \"c\"\n[[variants]]\nname = \"b__c\"\n")
+file(REMOVE_RECURSE "${OUT}/runs")
+execute_process(COMMAND "${LBDEM}" sweep "${OUT}/sweep.toml" --out "${OUT}/runs" --progress-every 0
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
+if(NOT code EQUAL 2 OR NOT err MATCHES "sweep.toml:6.*variants.name.*'__'" OR EXISTS "${OUT}/runs")
+    message(FATAL_ERROR "variants whose folders collide must be refused before any run (${code}):\n${out}${err}")
+endif()
+variant_refused("[[variants]]\nname = \"_b\"\n" "sweep.toml:4.*variants.name.*not starting with '_'")
 # --report gathers from a folder that exists; a missing one is bad input, and nothing is created.
 file(WRITE "${OUT}/sweep.toml" "sweep = 1\ncases = [\"good.toml\"]\n")
 execute_process(COMMAND "${LBDEM}" sweep "${OUT}/sweep.toml" --out "${OUT}/absent" --report
