@@ -68,9 +68,11 @@ std::string defaultPackingCacheDir();
 /// Cache key: a hash of every parameter that influences the packing (and the generator version).
 std::string packingCacheKey(const PackingRequest& request);
 
-/// Read a cached packing into packing; false when absent or unreadable.
+/// Read a cached packing into packing; false when absent, unreadable, or damaged (its checksum
+/// line missing or not matching), so that the caller generates it again and overwrites it.
 bool readCachedPacking(const std::string& path, Packing& packing);
-/// Write a packing (hex floats, exact round trip) atomically; false on failure.
+/// Write a packing (hex floats, exact round trip, a checksum line last) atomically; false on
+/// failure.
 bool writeCachedPacking(const std::string& path, const Packing& packing);
 
 } // namespace lbdem::solver::dem

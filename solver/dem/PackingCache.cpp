@@ -1,6 +1,10 @@
-// Packing cache: one text file per parameter set, hex floats so that a reload is bit-exact.
+// Packing cache: one text file per parameter set, hex floats so that a reload is bit-exact, and a
+// checksum on its last line so that a damaged file is made again rather than used.
 #include "solver/dem/Packing.h"
 
+#include "solver/core/Checksum.h"
+
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +17,8 @@ namespace {
 
 // Bump when the generator changes, so that old cached packings are not reused.
 constexpr int kGeneratorVersion = 3; // 3: one thread, whatever the run's count
+// Starts the last line of an entry, which sums all the lines before it.
+const std::string kChecksumPrefix = "checksum ";
 
 std::string hexFloat(Real v) {
     char buffer[64];
@@ -51,16 +57,26 @@ std::string packingCacheKey(const PackingRequest& r) {
 }
 
 bool readCachedPacking(const std::string& path, Packing& p) {
-    std::ifstream in(path);
-    if (!in) return false;
+    std::ifstream file(path, std::ios::binary);
+    if (!file) return false;
+    const std::string text((std::istreambuf_iterator<char>(file)),
+                           std::istreambuf_iterator<char>());
+    // The last line is "checksum HEX" over everything before it; a file without it (written
+    // before checksums, or cut short) or whose sum differs is not used.
+    const auto last = text.rfind(kChecksumPrefix);
+    if (last == std::string::npos || (last > 0 && text[last - 1] != '\n')) return false;
+    const std::string body = text.substr(0, last);
+    if (text.substr(last) != kChecksumPrefix + solver::checksumOf(body) + "\n") return false;
+    std::istringstream in(body);
     std::string magic, token;
     std::size_t n = 0;
     in >> magic >> n;
     if (magic != "lbdem-packing" || !in) return false;
     auto real = [&](Real& v) {
         if (!(in >> token)) return false;
-        v = std::strtod(token.c_str(), nullptr);
-        return true;
+        char* end = nullptr;
+        v = std::strtod(token.c_str(), &end);
+        return end != token.c_str() && *end == '\0' && std::isfinite(v);
     };
     Real converged = 0, depositions = 0;
     if (!(real(p.width) && real(p.height) && real(p.fraction) && real(p.target) &&
@@ -82,16 +98,18 @@ bool writeCachedPacking(const std::string& path, const Packing& p) {
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), error);
     // Write a sibling file and rename it, so a reader never sees half a packing.
     const std::string partial = path + ".part";
+    std::ostringstream text;
+    text << "lbdem-packing " << p.x.size() << '\n';
+    for (Real v : {p.width, p.height, p.fraction, p.target, p.prep_friction, Real(p.depositions),
+                   Real(p.converged ? 1 : 0)})
+        text << hexFloat(v) << '\n';
+    for (std::size_t k = 0; k < p.x.size(); ++k)
+        text << hexFloat(p.x[k]) << ' ' << hexFloat(p.y[k]) << ' ' << hexFloat(p.radius[k]) << '\n';
+    const std::string body = text.str();
     {
-        std::ofstream out(partial);
+        std::ofstream out(partial, std::ios::binary | std::ios::trunc);
         if (!out) return false;
-        out << "lbdem-packing " << p.x.size() << '\n';
-        for (Real v : {p.width, p.height, p.fraction, p.target, p.prep_friction,
-                       Real(p.depositions), Real(p.converged ? 1 : 0)})
-            out << hexFloat(v) << '\n';
-        for (std::size_t k = 0; k < p.x.size(); ++k)
-            out << hexFloat(p.x[k]) << ' ' << hexFloat(p.y[k]) << ' ' << hexFloat(p.radius[k])
-                << '\n';
+        out << body << kChecksumPrefix << solver::checksumOf(body) << '\n';
         if (!out) return false;
     }
     std::filesystem::rename(partial, path, error);
