@@ -49,6 +49,14 @@ foreach(packing IN LISTS used)
                             "committed one, so its start depends on this processor; regenerate the "
                             "golden runs deliberately (tests/regression/README.md)")
     endif()
+    # A committed packing that fails its checksum is settled again and rewritten, not read.
+    file(SHA256 "${packing}" used_sum)
+    file(SHA256 "${PACKINGS}/${leaf}" committed_sum)
+    if(NOT used_sum STREQUAL committed_sum)
+        message(FATAL_ERROR "${NAME}: the committed packing ${leaf} was not read but settled again "
+                            "(is its checksum line missing or wrong?); regenerate the golden runs "
+                            "deliberately (tests/regression/README.md)")
+    endif()
 endforeach()
 if(NOT EXISTS "${golden_csv}" OR NOT EXISTS "${golden_compiler_file}")
     message(FATAL_ERROR "${NAME}: no golden time series ${golden_csv} (tests/regression/README.md)")
