@@ -13,6 +13,11 @@
 #include <thread>
 #include <unistd.h>
 
+#ifdef __linux__
+#include <csignal>
+#include <sys/prctl.h>
+#endif
+
 extern char** environ;
 
 namespace lbdem::campaign {
@@ -20,6 +25,19 @@ namespace lbdem::campaign {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Names the process that started a job, so that the job can end when it does.
+constexpr const char* kParentVariable = "LBDEM_PARENT_PID";
+
+/// This process's environment, with kParentVariable set to its pid, for its children.
+std::vector<std::string> childEnvironment() {
+    const std::string prefix = std::string(kParentVariable) + "=";
+    std::vector<std::string> environment;
+    for (char** entry = environ; *entry; ++entry)
+        if (std::string(*entry).rfind(prefix, 0) != 0) environment.emplace_back(*entry);
+    environment.push_back(prefix + std::to_string(::getpid()));
+    return environment;
+}
 
 pid_t spawnJob(const Job& job) {
     posix_spawn_file_actions_t actions;
@@ -32,8 +50,13 @@ pid_t spawnJob(const Job& job) {
     for (const auto& arg : job.argv)
         argv.push_back(const_cast<char*>(arg.c_str()));
     argv.push_back(nullptr);
+    const std::vector<std::string> environment = childEnvironment();
+    std::vector<char*> envp;
+    for (const auto& entry : environment)
+        envp.push_back(const_cast<char*>(entry.c_str()));
+    envp.push_back(nullptr);
     pid_t pid = 0;
-    const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     if (error != 0)
         throw std::runtime_error("cannot start " + job.argv.front() + " for " + job.label);
@@ -90,6 +113,19 @@ std::vector<JobResult> runJobs(const std::vector<Job>& jobs, int maxParallel,
         if (onFinished) onFinished(result, done, total);
     }
     return results;
+}
+
+void endWithParent() {
+    const char* parent = std::getenv(kParentVariable);
+    if (!parent || !*parent) return;
+    const long parentPid = std::strtol(parent, nullptr, 10);
+    ::unsetenv(kParentVariable); // not for this process's own children
+#ifdef __linux__
+    // SIGTERM, not SIGKILL: a run that catches it can stop between steps with a checkpoint.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+#endif
+    // The parent may have died before prctl took effect: then no signal comes, so end now.
+    if (::getppid() != static_cast<pid_t>(parentPid)) std::_Exit(143);
 }
 
 std::string selfExecutable() {

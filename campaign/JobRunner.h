@@ -43,6 +43,11 @@ runJobs(const std::vector<Job>& jobs, int maxParallel,
 /// unless the user set OMP_NUM_THREADS.
 void shareCoresBetweenJobs(int maxParallel);
 
+/// In a process started by runJobs: end when the process that started it ends (a killed sweep
+/// or study leaves no run going, which a restarted one would race); SIGTERM is delivered then,
+/// on Linux. Elsewhere, and outside runJobs, it does nothing.
+void endWithParent();
+
 /// Path of the running executable (to start lbdem itself as a child).
 std::string selfExecutable();
 

@@ -9,16 +9,19 @@
 
 namespace lbdem::campaign {
 
-/// True when dir holds the outputs of a run (case.toml, plan.json, summary.json,
-/// timeseries.csv or checkpoint.h5).
+/// True when dir holds a run: a file that only a run writes (plan.json, checkpoint.h5, run.json).
 bool holdsRun(const std::filesystem::path& dir);
 
-/// Throw InputError (exit 2) when dir is a file, or holds a run and force is not given.
+/// Throw InputError (exit 2) when a run may not go into dir: dir is a file; it holds a run and
+/// force is not given, or force is given but its case.toml was edited since the run wrote it;
+/// it holds no run but files a run would overwrite (case.toml, vtk/, ...), or, with force,
+/// any file at all (a lock file or a sweep's log.txt aside). Changes nothing.
 void refuseExistingRun(const std::filesystem::path& dir, bool force);
 
-/// Make dir ready for a new run: refuse (InputError, exit 2) when it holds a run unless force,
-/// in which case the old run's outputs (files and the vtk/, profiles/, frames/ folders) are
-/// removed first; create it when missing. Other files in dir are left alone.
+/// Make dir ready for a new run after refuseExistingRun's checks: when it holds a run (force),
+/// remove the old run's outputs and nothing else (its files, and in vtk/, profiles/, frames/
+/// the files named as a run names them, each folder when it is left empty); create dir when
+/// missing. The caller holds dir's RunLock.
 void prepareRunFolder(const std::filesystem::path& dir, bool force);
 
 /// Sentences about a plan that does not fit this machine: memory above its physical memory,

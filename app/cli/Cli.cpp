@@ -2,6 +2,7 @@
 #include "app/cli/Cli.h"
 
 #include "app/cli/Commands.h"
+#include "campaign/JobRunner.h"
 #include "solver/core/InputError.h"
 
 #include <CLI/CLI.hpp>
@@ -12,6 +13,7 @@
 namespace lbdem::cli {
 
 int runCli(int argc, char** argv) {
+    campaign::endWithParent(); // a sweep's or study's run ends with its sweep or study
     CLI::App app{"lbdem — 2D lattice-Boltzmann / discrete-element simulator of submerged "
                  "granular flows"};
     app.footer("Exit codes: 0 success; 1 failure (a file that cannot be written, memory exhausted, "

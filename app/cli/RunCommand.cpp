@@ -11,6 +11,8 @@
 #include "solver/io/CaseWriter.h"
 #include "solver/io/Checkpoint.h"
 #include "solver/io/PlanJson.h"
+#include "solver/io/RunIdentity.h"
+#include "solver/io/RunLock.h"
 #include "solver/scene/Plan.h"
 #include "solver/scene/Simulation.h"
 
@@ -23,6 +25,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace lbdem::cli {
 
@@ -49,12 +52,13 @@ void applyThreads(const solver::CaseSpec& spec) {
 }
 
 void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions& options,
-           bool resumed) {
+           bool resumed, const io::RunIdentity& identity) {
     const auto& spec = simulation.spec();
     if (spec.output.vtk && !sinksAvailable() && !options.quiet)
         std::cerr
             << "warning: this build has no VTK (LBDEM_GUI=OFF): no VTU/VTI files are written\n";
     RunDriverOptions driverOptions{dir, options.quiet, options.untilTc, resumed};
+    driverOptions.identity = identity;
     RunDriver driver(simulation, driverOptions);
     SinkOptions sinkOptions{spec.output.vtk, spec.output.vtk_every, options.renderEveryTc,
                             spec.run.output_interval_tc, resumed};
@@ -84,18 +88,25 @@ void runCase(const RunOptions& options) {
     const solver::CaseSpec spec = options.caseOptions.load();
     const solver::Plan plan = solver::makePlan(spec);
     const fs::path dir = options.out.empty() ? "results/" + spec.name : options.out;
+    // One writer at a time: a folder that another process is writing is refused first, naming
+    // it; a folder without a lock file gets one only once every check has passed.
+    std::optional<io::RunLock> lock;
+    if (fs::exists(dir / io::RunLock::kFileName)) lock.emplace(dir);
     campaign::refuseExistingRun(dir, options.force);
     campaign::checkResources(plan, dir, options.force, options.quiet);
     applyThreads(spec);
     const auto simulation = buildSimulation(
         spec, plan, options.caseOptions.path.empty() ? "the case" : options.caseOptions.path);
+    if (!lock) lock.emplace(dir); // before anything in the folder is removed or written
     campaign::prepareRunFolder(dir, options.force);
+    const io::RunIdentity identity = io::newRunIdentity(io::formatCase(spec));
+    io::writeRunIdentity(dir, identity);
     io::writeCase(spec, (dir / "case.toml").string());
     io::writeFileAtomically((dir / "plan.json").string(), io::planToJson(plan).dump(2) + "\n");
     if (!options.quiet)
         for (const auto& warning : plan.warnings)
             std::cerr << "warning: " << warning << "\n";
-    drive(*simulation, dir, options, false);
+    drive(*simulation, dir, options, false, identity);
 }
 
 void resumeCase(const RunOptions& options) {
@@ -112,7 +123,14 @@ void resumeCase(const RunOptions& options) {
                    "lbdem run CASE --out " +
                        dir.string() + " --force"
                  : "was the run started with lbdem run --out " + dir.string() + "?"));
-    const io::CheckpointData data = io::readCheckpoint(checkpoint.string());
+    const io::RunLock lock(dir);
+    const io::CheckpointData data = io::readCheckpoint(checkpoint.string(), options.force);
+    if (!data.verified && !options.quiet)
+        std::cerr << "warning: " << checkpoint.string()
+                  << " carries no checksum: resuming it unverified (--force)\n";
+    // A checkpoint that another run wrote is refused before anything is changed.
+    const auto folderIdentity = io::readRunIdentity(dir);
+    io::checkCheckpointBelongs(checkpoint.string(), data, folderIdentity);
     const solver::CaseSpec spec =
         io::parseCase(data.case_toml, checkpoint.string() + " (case_toml)");
     const solver::Plan plan = solver::makePlan(spec);
@@ -124,10 +142,14 @@ void resumeCase(const RunOptions& options) {
         throw solver::InputError(checkpoint.string() +
                                  " does not match the case it holds: " + error.what());
     }
+    // A folder of an older lbdem (no run.json, a checkpoint without run id) gets an identity now.
+    const io::RunIdentity identity =
+        folderIdentity ? *folderIdentity : io::newRunIdentity(data.case_toml);
+    if (!folderIdentity) io::writeRunIdentity(dir, identity);
     if (!options.quiet)
         std::cout << "resuming " << spec.name << " at t/tc = " << simulation->timeOverTc()
                   << " (step " << simulation->stepIndex() << ")\n";
-    drive(*simulation, dir, options, true);
+    drive(*simulation, dir, options, true, identity);
 }
 
 } // namespace
@@ -147,8 +169,9 @@ void addRunCommand(CLI::App& app, int& exitCode) {
     command->add_flag("--quiet", options->quiet, "Print nothing but errors");
     command->add_flag(
         "--force", options->force,
-        "Replace a run already in the output folder (its outputs are removed first), and run "
-        "even when the plan's memory or outputs exceed this machine's memory or free disk");
+        "Replace a run already in the output folder (its outputs, and nothing else, are removed "
+        "first; a folder that holds files but no run is refused), and run even when the plan's "
+        "memory or outputs exceed this machine's memory or free disk");
     command->callback([options, &exitCode] {
         runCase(*options);
         exitCode = kExitOk;
@@ -163,6 +186,9 @@ void addRunCommand(CLI::App& app, int& exitCode) {
     resume->add_option("--render-every", resumeOptions->renderEveryTc, "PNG frame every X tau_c")
         ->check(CLI::NonNegativeNumber);
     resume->add_flag("--quiet", resumeOptions->quiet, "Print nothing but errors");
+    resume->add_flag("--force", resumeOptions->force,
+                     "Resume a checkpoint that carries no checksum (written before checksums, or "
+                     "with its checksum attribute damaged), unverified");
     resume->callback([resumeOptions, &exitCode] {
         resumeCase(*resumeOptions);
         exitCode = kExitOk;

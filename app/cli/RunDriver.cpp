@@ -104,6 +104,8 @@ void RunDriver::writeCheckpoint() {
     io::CheckpointData data;
     data.case_toml = io::formatCase(m_simulation.spec());
     data.state = m_simulation.saveState();
+    data.run_id = m_options.identity.run_id;
+    data.case_hash = m_options.identity.case_hash;
     io::writeCheckpoint((m_options.dir / "checkpoint.h5").string(), data);
 }
 

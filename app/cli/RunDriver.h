@@ -1,6 +1,7 @@
 // Drives a Simulation to its end: outputs at intervals, checkpoints, progress, summary.
 #pragma once
 
+#include "solver/io/RunIdentity.h"
 #include "solver/scene/Simulation.h"
 
 #include <filesystem>
@@ -24,6 +25,7 @@ struct RunDriverOptions {
     bool quiet = false;        ///< no progress lines
     double until_tc = -1;      ///< stop at this t / tau_c instead of the case's end (if > 0)
     bool resumed = false;      ///< continuing from DIR/checkpoint.h5: append, do not restart
+    io::RunIdentity identity;  ///< the run's id and case hash, written into every checkpoint
 };
 
 /// Steps a Simulation and writes timeseries.csv, summary.json, checkpoint.h5 and the snapshot

@@ -10,6 +10,7 @@
 #include "campaign/SweepSlurm.h"
 #include "campaign/figures/SweepFigures.h"
 #include "solver/core/InputError.h"
+#include "solver/io/RunLock.h"
 #include "solver/io/SweepFile.h"
 
 #include <CLI/CLI.hpp>
@@ -117,10 +118,13 @@ int runSweep(const SweepOptions& options) {
             throw solver::InputError("--out " + options.out +
                                      " is not a folder: there is nothing to gather (run the "
                                      "sweep into it first)");
+        const io::RunLock lock(out); // not while a sweep runs into it
         report(sweep.name, entries, options);
         return kExitOk;
     }
-    fs::create_directories(out);
+    // One sweep at a time in a folder; each run locks its own folder too, so that a run left
+    // going by an earlier sweep is never written twice.
+    const io::RunLock lock(out);
     std::vector<SweepEntry> toRun;
     const std::vector<Job> jobs = jobsToRun(runs, options, toRun);
     std::cout.flush();

@@ -3,6 +3,7 @@
 
 #include <hdf5.h>
 
+#include "solver/core/Checksum.h"
 #include "solver/core/InputError.h"
 
 #include <cerrno>
@@ -21,8 +22,11 @@ constexpr const char* kRealGroup = "/reals";
 constexpr const char* kIntegerGroup = "/integers";
 constexpr const char* kCaseAttribute = "case_toml";
 constexpr const char* kChecksumAttribute = "checksum";
-// 2: a checksum of the case and every array (format 1 had none and is still read).
-constexpr int kFormatVersion = 2;
+constexpr const char* kRunIdAttribute = "run_id";
+constexpr const char* kCaseHashAttribute = "case_hash";
+// 2: a checksum of the case and every array; 3: the run's id and case hash, in the checksum too
+// (older formats are still read: 1 only with --force, as it has no checksum).
+constexpr int kFormatVersion = 3;
 // Arrays that may hold NaN legitimately: the metrics of the last output (undefined metrics).
 constexpr const char* kMayBeNonFinite = "run/last_metric/";
 
@@ -111,45 +115,17 @@ std::string decodeName(std::string name) {
     return name;
 }
 
-/// A 64-bit hash of bytes in 8-byte words: FNV-1a's offset and prime with an extra xor-shift
-/// so that every bit of a word reaches every bit of the hash; a tail shorter than a word is
-/// zero-padded. Detects damage, not tampering.
-class Checksum {
-public:
-    void add(const void* data, std::size_t bytes) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        std::size_t k = 0;
-        for (; k + 8 <= bytes; k += 8) {
-            std::uint64_t word;
-            std::memcpy(&word, p + k, 8);
-            mix(word);
-        }
-        if (k < bytes) {
-            std::uint64_t word = 0;
-            std::memcpy(&word, p + k, bytes - k);
-            mix(word);
-        }
-        mix(bytes); // lengths count, so that moving bytes between arrays changes the sum
-    }
-    void add(const std::string& text) { add(text.data(), text.size()); }
-    std::string hex() const {
-        char text[24];
-        std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(m_hash));
-        return text;
-    }
-
-private:
-    void mix(std::uint64_t word) {
-        m_hash = (m_hash ^ word) * 0x100000001b3ULL;
-        m_hash ^= m_hash >> 29;
-    }
-    std::uint64_t m_hash = 0xcbf29ce484222325ULL;
-};
+using solver::Checksum;
 
 /// The checksum of a checkpoint's case and arrays, in name order.
 std::string checksumOf(const CheckpointData& data) {
     Checksum sum;
     sum.add(data.case_toml);
+    // The run's identity counts only when present, so that format-2 files still verify.
+    if (!data.run_id.empty() || !data.case_hash.empty()) {
+        sum.add(data.run_id);
+        sum.add(data.case_hash);
+    }
     for (const auto& [name, values] : data.state.reals) {
         sum.add(name);
         sum.add(values.data(), values.size() * sizeof(double));
@@ -196,6 +172,8 @@ void writeFile(const std::string& path, const CheckpointData& data) {
     writeStringAttribute(file.get(), "format",
                          "lbdem checkpoint " + std::to_string(kFormatVersion));
     writeStringAttribute(file.get(), kChecksumAttribute, checksumOf(data));
+    writeStringAttribute(file.get(), kRunIdAttribute, data.run_id);
+    writeStringAttribute(file.get(), kCaseHashAttribute, data.case_hash);
     Handle reals(H5Gcreate2(file.get(), kRealGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                  H5Gclose, "cannot create group");
     for (const auto& [name, values] : data.state.reals)
@@ -208,10 +186,17 @@ void writeFile(const std::string& path, const CheckpointData& data) {
         throw std::runtime_error("cannot flush " + path);
 }
 
-CheckpointData readFile(const std::string& path) {
+/// The string attribute called name, or "" when the file has none.
+std::string optionalAttribute(hid_t file, const char* name) {
+    return H5Aexists(file, name) > 0 ? readStringAttribute(file, name) : std::string();
+}
+
+CheckpointData readFile(const std::string& path, bool acceptUnverified) {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "not an HDF5 file");
     CheckpointData data;
     data.case_toml = readStringAttribute(file.get(), kCaseAttribute);
+    data.run_id = optionalAttribute(file.get(), kRunIdAttribute);
+    data.case_hash = optionalAttribute(file.get(), kCaseHashAttribute);
     Handle reals(H5Gopen2(file.get(), kRealGroup, H5P_DEFAULT), H5Gclose, "missing group /reals");
     for (const auto& name : linkNames(reals.get()))
         data.state.reals[decodeName(name)] =
@@ -221,9 +206,15 @@ CheckpointData readFile(const std::string& path) {
     for (const auto& name : linkNames(integers.get()))
         data.state.integers[decodeName(name)] =
             readDataset<std::int64_t>(integers.get(), name, H5T_NATIVE_INT64);
-    const bool hasChecksum = H5Aexists(file.get(), kChecksumAttribute) > 0;
-    verify(path, data,
-           hasChecksum ? readStringAttribute(file.get(), kChecksumAttribute) : std::string());
+    const std::string checksum = optionalAttribute(file.get(), kChecksumAttribute);
+    // Without its checksum nothing tells damaged arrays from sound ones: a checksum that is
+    // missing (or whose name was damaged) must not switch the verification off silently.
+    if (checksum.empty() && !acceptUnverified)
+        throw solver::InputError(path + " carries no checksum (attribute '" + kChecksumAttribute +
+                                 "'), so it cannot be verified; lbdem resume --force resumes it "
+                                 "unverified");
+    data.verified = !checksum.empty();
+    verify(path, data, checksum);
     return data;
 }
 
@@ -249,11 +240,11 @@ void writeCheckpoint(const std::string& path, const CheckpointData& data) {
     }
 }
 
-CheckpointData readCheckpoint(const std::string& path) {
+CheckpointData readCheckpoint(const std::string& path, bool acceptUnverified) {
     if (!std::filesystem::exists(path)) throw solver::InputError(path + " does not exist");
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // errors become exceptions with our messages
     try {
-        return readFile(path);
+        return readFile(path, acceptUnverified);
     } catch (const solver::InputError&) {
         throw;
     } catch (const std::exception& error) {

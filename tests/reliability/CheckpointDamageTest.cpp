@@ -1,9 +1,15 @@
 // A damaged or edited checkpoint is refused by `lbdem resume` with one sentence and exit 2,
 // within seconds: random bytes in the lattice data, a case that disagrees with the arrays, a
-// grain far outside the domain, a value that is not finite, an edit of the stored case text.
+// grain far outside the domain, a value that is not finite, an edit of the stored case text, a
+// checksum attribute renamed by one byte (resumed only with --force), a checkpoint copied in
+// from another run's folder (of another case, or of the same case) with no file changed.
 // (Before the checksum, random bytes and a far grain made resume loop forever in the coupling.)
+#include "solver/core/Checksum.h"
 #include "solver/io/Checkpoint.h"
+#include "solver/io/RunIdentity.h"
 
+#include <QCryptographicHash>
+#include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -12,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <random>
 
 using namespace lbdem;
@@ -26,9 +33,16 @@ private slots:
     void caseDisagreesWithArrays();
     void grainFarOutside();
     void nonFiniteValue();
+    void renamedChecksumAttribute();
+    void copiedFromAnotherCase();
+    void copiedFromAnotherRunOfTheCase();
     void intactCheckpointResumes();
 
 private:
+    /// Run the test's case (with extra overrides) into dir, stopped at 0.1 tau_c.
+    void runInto(const std::string& dir, const QStringList& extra = {});
+    /// Copy other's checkpoint into a copy of the run: resume must exit 2 changing no file.
+    void expectForeignRefused(const QString& name, const std::string& other);
     /// A copy of the run folder, to damage.
     std::string copyRun(const QString& name);
     /// `lbdem resume DIR --quiet [extra]`: exit code (-1 on a hang or a signal), stderr in message.
@@ -40,20 +54,25 @@ private:
     std::string m_run;
 };
 
-void CheckpointDamageTest::initTestCase() {
-    // Submerged and coarse, stopped at 0.1 tau_c: a checkpoint with lattice, coupling and grains.
-    m_run = (fs::path(m_dir.path().toStdString()) / "run").string();
+void CheckpointDamageTest::runInto(const std::string& dir, const QStringList& extra) {
     QProcess process;
     process.setProcessChannelMode(QProcess::MergedChannels);
     process.start(LBDEM_EXECUTABLE,
-                  {"run", LBDEM_SOURCE_DIR "/sample_cases/default.toml", "--out",
-                   QString::fromStdString(m_run), "--quiet", "--until-tc", "0.1", "--set",
-                   "grains.count=150", "--set", "grains.packing=0.79", "--set",
-                   "fluid.resolution=4", "--set", "run.end_tc=0.2", "--set",
-                   "run.output_interval_tc=0.05", "--set", "output.vtk=false"});
+                  QStringList{"run", LBDEM_SOURCE_DIR "/sample_cases/default.toml", "--out",
+                              QString::fromStdString(dir), "--quiet", "--until-tc", "0.1", "--set",
+                              "grains.count=150", "--set", "grains.packing=0.79", "--set",
+                              "fluid.resolution=4", "--set", "run.end_tc=0.2", "--set",
+                              "run.output_interval_tc=0.05", "--set", "output.vtk=false"} +
+                      extra);
     QVERIFY(process.waitForFinished(300000));
     QVERIFY2(process.exitCode() == 0, process.readAll().constData());
-    QVERIFY(fs::exists(m_run + "/checkpoint.h5"));
+    QVERIFY(fs::exists(dir + "/checkpoint.h5"));
+}
+
+void CheckpointDamageTest::initTestCase() {
+    // Submerged and coarse, stopped at 0.1 tau_c: a checkpoint with lattice, coupling and grains.
+    m_run = (fs::path(m_dir.path().toStdString()) / "run").string();
+    runInto(m_run);
 }
 
 std::string CheckpointDamageTest::copyRun(const QString& name) {
@@ -122,7 +141,11 @@ void CheckpointDamageTest::caseDisagreesWithArrays() {
     const auto at = data.case_toml.find("count = 150");
     QVERIFY(at != std::string::npos);
     data.case_toml.replace(at, 11, "count = 140");
-    io::writeCheckpoint(dir + "/checkpoint.h5", data); // a valid checksum over the edited case
+    // A valid checksum over the edited case, and the folder's run.json made to name it, so that
+    // only the arrays disagree with the case.
+    data.case_hash = solver::checksumOf(data.case_toml);
+    io::writeCheckpoint(dir + "/checkpoint.h5", data);
+    io::writeRunIdentity(dir, {data.run_id, data.case_hash});
     expectRefused(dir, "does not match");
 }
 
@@ -140,6 +163,56 @@ void CheckpointDamageTest::nonFiniteValue() {
     data.state.reals.at("lattice/f").at(1000) = std::numeric_limits<double>::quiet_NaN();
     io::writeCheckpoint(dir + "/checkpoint.h5", data);
     expectRefused(dir, "not finite");
+}
+
+void CheckpointDamageTest::renamedChecksumAttribute() {
+    const std::string dir = copyRun("renamed_checksum");
+    const std::string path = dir + "/checkpoint.h5";
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    const auto at = bytes.find("checksum");
+    QVERIFY(at != std::string::npos);
+    QVERIFY(bytes.find("checksum", at + 1) == std::string::npos); // only the attribute's name
+    bytes[at + 7] = 'n'; // "checksun": the file is valid HDF5 without its checksum
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    expectRefused(dir, "no checksum.*--force");
+    QString message;
+    QCOMPARE(resume(dir, message, {"--until-tc", "0.11", "--force"}), 0);
+}
+
+/// The name and SHA-256 of every file under dir.
+static std::map<std::string, QByteArray> fingerprint(const std::string& dir) {
+    std::map<std::string, QByteArray> sums;
+    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+        if (!entry.is_regular_file()) continue;
+        QFile file(QString::fromStdString(entry.path().string()));
+        QCryptographicHash hash(QCryptographicHash::Sha256);
+        if (file.open(QIODevice::ReadOnly)) hash.addData(&file);
+        sums[fs::relative(entry.path(), dir).string()] = hash.result();
+    }
+    return sums;
+}
+
+void CheckpointDamageTest::expectForeignRefused(const QString& name, const std::string& other) {
+    const std::string dir = copyRun(name);
+    fs::copy_file(other + "/checkpoint.h5", dir + "/checkpoint.h5",
+                  fs::copy_options::overwrite_existing);
+    const auto before = fingerprint(dir);
+    expectRefused(dir, "belongs to run|holds another case");
+    QVERIFY(fingerprint(dir) == before);
+}
+
+void CheckpointDamageTest::copiedFromAnotherCase() {
+    const std::string other = (fs::path(m_dir.path().toStdString()) / "other_seed").string();
+    runInto(other, {"--set", "grains.seed=2"});
+    expectForeignRefused("copied_other_case", other);
+}
+
+void CheckpointDamageTest::copiedFromAnotherRunOfTheCase() {
+    const std::string twin = (fs::path(m_dir.path().toStdString()) / "twin").string();
+    runInto(twin);
+    expectForeignRefused("copied_twin", twin);
 }
 
 void CheckpointDamageTest::intactCheckpointResumes() {

@@ -1,12 +1,18 @@
 // Fuzz-style robustness: a few hundred malformed or extreme variants of the default case
 // (mutated keys, values, types and syntax, random bytes) each make `lbdem info` exit 0 or 2
 // within seconds, with one line of message on 2; a few dozen extreme values of run-time keys
-// make a short `lbdem run` exit 0, 2 or 3 (a stability guard), never a signal or a hang.
+// make a short `lbdem run` exit 0, 2 or 3 (a stability guard), never a signal or a hang. Run
+// folders given another run's checkpoint make `lbdem resume` exit 2 changing no file, and
+// random pairs of writers started together on one folder (run --force, resume) leave one
+// running and the other refused with exit 2 naming its pid, and a consistent time series.
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -18,6 +24,8 @@ private slots:
     void initTestCase();
     void infoSurvivesMutants();
     void runSurvivesExtremeValues();
+    void foreignCheckpointsRefused();
+    void concurrentWritersRefused();
 
 private:
     std::vector<std::string> m_lines;
@@ -216,6 +224,142 @@ void FuzzCasesTest::runSurvivesExtremeValues() {
                                  QString::fromStdString(value).left(40))
                             .arg(outcome.code)
                             .arg(outcome.message.left(300));
+    }
+    QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
+}
+
+namespace {
+
+constexpr int kFolders = 3;
+
+/// A short dry run of the default case with grains.seed = seed, into dir.
+QStringList shortRun(const QString& dir, int seed, const QString& untilTc) {
+    return {"run",
+            LBDEM_SOURCE_DIR "/sample_cases/default.toml",
+            "--out",
+            dir,
+            "--quiet",
+            "--until-tc",
+            untilTc,
+            "--set",
+            "grains.count=150",
+            "--set",
+            "grains.packing=0.79",
+            "--set",
+            "fluid.enabled=false",
+            "--set",
+            "output.vtk=false",
+            "--set",
+            "run.end_tc=0.5",
+            "--set",
+            "run.output_interval_tc=0.05",
+            "--set",
+            QString("grains.seed=%1").arg(seed)};
+}
+
+/// Every file under dir with its bytes.
+std::map<std::string, std::string> contents(const std::string& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+        if (entry.is_regular_file()) {
+            std::ifstream in(entry.path(), std::ios::binary);
+            files[entry.path().string()] = {std::istreambuf_iterator<char>(in),
+                                            std::istreambuf_iterator<char>()};
+        }
+    return files;
+}
+
+/// The step column of dir/timeseries.csv (the third).
+std::vector<long long> steps(const std::string& dir) {
+    std::ifstream in(dir + "/timeseries.csv");
+    std::vector<long long> column;
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        std::string cell;
+        for (int k = 0; k < 3 && std::getline(row, cell, ','); ++k) {
+        }
+        column.push_back(std::stoll(cell));
+    }
+    return column;
+}
+
+} // namespace
+
+void FuzzCasesTest::foreignCheckpointsRefused() {
+    std::mt19937 random(kSeed + 2);
+    QStringList folders;
+    for (int k = 0; k < kFolders; ++k) {
+        folders << m_dir.filePath(QString("foreign_%1").arg(k));
+        const int seed = 1 + static_cast<int>(pick(random, 1000)); // a case of its own
+        // Every folder a run of its own: the same seed twice still makes two runs.
+        const Outcome made = runLbdem(shortRun(folders.back(), seed, "0.1"), 180000);
+        QVERIFY2(made.code == 0, qPrintable(made.message));
+    }
+    QStringList failures;
+    for (int k = 0; k < kFolders; ++k) {
+        const std::string dir = folders[k].toStdString();
+        const std::string other =
+            folders[(k + 1 + static_cast<int>(pick(random, kFolders - 1))) % kFolders]
+                .toStdString();
+        std::filesystem::copy_file(dir + "/checkpoint.h5", dir + "/own.h5");
+        std::filesystem::copy_file(other + "/checkpoint.h5", dir + "/checkpoint.h5",
+                                   std::filesystem::copy_options::overwrite_existing);
+        const auto before = contents(dir);
+        const Outcome outcome = runLbdem({"resume", folders[k], "--quiet"}, 60000);
+        if (outcome.code != 2 || outcome.message.count('\n') != 1 || contents(dir) != before)
+            failures << QString("%1 with the checkpoint of %2: exit %3: %4")
+                            .arg(folders[k], QString::fromStdString(other))
+                            .arg(outcome.code)
+                            .arg(outcome.message.left(300));
+        std::filesystem::rename(dir + "/own.h5", dir + "/checkpoint.h5");
+    }
+    QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
+}
+
+void FuzzCasesTest::concurrentWritersRefused() {
+    std::mt19937 random(kSeed + 3);
+    QStringList failures;
+    for (int k = 0; k < kFolders; ++k) {
+        const QString dir = m_dir.filePath(QString("writers_%1").arg(k));
+        const int seed = 1 + static_cast<int>(pick(random, 1000));
+        const Outcome made = runLbdem(shortRun(dir, seed, "0.1"), 180000);
+        QVERIFY2(made.code == 0, qPrintable(made.message));
+        // Two writers at once, each a resume or a forced fresh start of the same case.
+        QStringList commands[2];
+        for (auto& command : commands)
+            command = pick(random, 2) ? QStringList{"resume", dir, "--quiet"}
+                                      : shortRun(dir, seed, "0.3") << "--force";
+        QProcess writers[2];
+        qint64 pids[2];
+        for (int w = 0; w < 2; ++w)
+            writers[w].start(LBDEM_EXECUTABLE, commands[w]);
+        for (int w = 0; w < 2; ++w)
+            pids[w] = writers[w].waitForStarted() ? writers[w].processId() : -1;
+        int codes[2];
+        QString messages[2];
+        for (int w = 0; w < 2; ++w) {
+            codes[w] = writers[w].waitForFinished(180000) &&
+                               writers[w].exitStatus() == QProcess::NormalExit
+                           ? writers[w].exitCode()
+                           : -1;
+            messages[w] = QString::fromLocal8Bit(writers[w].readAllStandardError());
+        }
+        const auto series = steps(dir.toStdString());
+        const bool increasing = std::is_sorted(series.begin(), series.end()) &&
+                                std::adjacent_find(series.begin(), series.end()) == series.end();
+        for (int w = 0; w < 2; ++w) {
+            const bool refusedNamingOther =
+                codes[w] == 2 && messages[w].contains(QString("pid %1").arg(pids[1 - w]));
+            if ((codes[w] != 0 && !refusedNamingOther) || (codes[w] == 2 && codes[1 - w] != 0))
+                failures << QString("%1: %2: exit %3: %4")
+                                .arg(dir, commands[w].join(' ').left(80))
+                                .arg(codes[w])
+                                .arg(messages[w].left(300));
+        }
+        if (!increasing)
+            failures << dir + ": timeseries.csv does not hold each step once, in order";
     }
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
 }

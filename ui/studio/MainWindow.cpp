@@ -4,6 +4,7 @@
 #include "solver/core/InputError.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/CaseWriter.h"
+#include "solver/io/RunLock.h"
 #include "ui/studio/CaseEditor.h"
 #include "ui/studio/CaseFiles.h"
 #include "ui/studio/LivePlots.h"
@@ -293,14 +294,22 @@ void MainWindow::exportCsv() {
 
 void MainWindow::toggleVtkRecording(bool on) {
     m_vtkWriter.reset();
+    m_recordLock.reset();
     if (!on) return;
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Record VTU series into"));
     try {
-        if (!dir.isEmpty()) m_vtkWriter = std::make_unique<vis::VtkRunWriter>(dir.toStdString());
+        // Not into a folder that an lbdem run (or another studio) is writing.
+        if (!dir.isEmpty()) {
+            m_recordLock = std::make_unique<io::RunLock>(dir.toStdString());
+            m_vtkWriter = std::make_unique<vis::VtkRunWriter>(dir.toStdString());
+        }
     } catch (const std::exception& failure) {
         QMessageBox::warning(this, tr("Cannot record"), QString::fromStdString(failure.what()));
     }
-    if (!m_vtkWriter) m_recordVtk->setChecked(false);
+    if (!m_vtkWriter) {
+        m_recordLock.reset();
+        m_recordVtk->setChecked(false);
+    }
 }
 
 int MainWindow::setEnsembleFolder(const QString& folder) {

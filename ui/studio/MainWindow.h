@@ -15,6 +15,9 @@ class QMenu;
 namespace lbdem::vis {
 class VtkRunWriter;
 }
+namespace lbdem::io {
+class RunLock;
+}
 
 namespace lbdem::studio {
 
@@ -98,6 +101,7 @@ private:
     QMenu* m_recentMenu = nullptr;
     QMenu* m_presetMenu = nullptr;
     solver::SnapshotPtr m_shown;
+    std::unique_ptr<io::RunLock> m_recordLock; ///< the recording folder's, while recording
     std::unique_ptr<vis::VtkRunWriter> m_vtkWriter;
     QString m_casePath;
     std::string m_caseName;
