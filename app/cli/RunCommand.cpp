@@ -57,8 +57,7 @@ void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions
     if (spec.output.vtk && !sinksAvailable() && !options.quiet)
         std::cerr
             << "warning: this build has no VTK (LBDEM_GUI=OFF): no VTU/VTI files are written\n";
-    RunDriverOptions driverOptions{dir, options.quiet, options.untilTc, resumed};
-    driverOptions.identity = identity;
+    RunDriverOptions driverOptions{dir, options.quiet, options.untilTc, resumed, identity};
     RunDriver driver(simulation, driverOptions);
     SinkOptions sinkOptions{spec.output.vtk, spec.output.vtk_every, options.renderEveryTc,
                             spec.run.output_interval_tc, resumed};

@@ -11,9 +11,9 @@ namespace lbdem::io {
 struct CheckpointData {
     std::string case_toml;      ///< the resolved case (io::formatCase), to rebuild the Simulation
     solver::StateArchive state; ///< the solver state (Simulation::saveState)
-    std::string run_id;    ///< the run that wrote it (run.json of its folder); "" before format 3
-    std::string case_hash; ///< checksum of case_toml, as run.json gives it; "" before format 3
-    bool verified = true;  ///< read back with its checksum (false only when accepted without)
+    std::string run_id{};    ///< the run that wrote it (run.json of its folder); "" before format 3
+    std::string case_hash{}; ///< checksum of case_toml, as run.json gives it; "" before format 3
+    bool verified = true;    ///< read back with its checksum (false only when accepted without)
 };
 
 /// Write data to path as HDF5 through a temporary file renamed over path, so that a run killed
