@@ -14,6 +14,10 @@ function(lbdem_configure_target target)
     if(LBDEM_SANITIZER)
         target_compile_options(${target} PRIVATE -fsanitize=${LBDEM_SANITIZER} -fno-omit-frame-pointer)
         target_link_options(${target} PRIVATE -fsanitize=${LBDEM_SANITIZER})
+        # Undefined behaviour fails the test that meets it instead of printing and going on.
+        if(LBDEM_SANITIZER MATCHES "undefined")
+            target_compile_options(${target} PRIVATE -fno-sanitize-recover=undefined)
+        endif()
     endif()
 endfunction()
 
