@@ -1,5 +1,5 @@
 // Permeability of the paper's generated columns: a window of the packing away from the walls,
-// grains fixed, pressure-driven flow at the run's fluid settings (issue 19, item 6).
+// grains fixed, pressure-driven flow at the run's fluid settings.
 #pragma once
 
 #include "solver/core/Real.h"

@@ -28,7 +28,7 @@ constexpr double kDiameter = 1.2e-3, kNodesPerDiameter = 6, kRhoS = 2650, kRhoF 
 constexpr double kTau = 0.506, kNu = 1e-6, kHydroRatio = 0.9;
 /// Steps of still fluid after mapping: enough for any spurious pressure to show in the loads.
 constexpr int kRestSteps = 20;
-/// Net force on a body at rest in still fluid, as a fraction of its buoyant weight (issue 19).
+/// Net force on a body at rest in still fluid, as a fraction of its buoyant weight.
 constexpr double kRestTolerance = 1e-6;
 /// Fluid steps between two samples of the column's wall forces.
 constexpr long long kSampleSteps = 8;

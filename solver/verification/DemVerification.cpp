@@ -75,7 +75,7 @@ VerificationResult restitutionResult(double e, bool wall) {
         compareRelative("restitution", quantity, mean, e, 0.005,
                         "linear spring-dashpot: ln e = -pi zeta / sqrt(1 - zeta^2), "
                         "contact ends at zero overlap (Schwager & Poeschel 2007)");
-    // The tolerance is absolute on e (issue 4: error <= 0.005).
+    // The tolerance is absolute on e (the contract: error <= 0.005).
     r.error = std::abs(mean - e);
     r.passed = std::isfinite(mean) && r.error <= r.tolerance;
     r.method = "dt=" + std::to_string(spec.grains.dt_safety) + " t_c";

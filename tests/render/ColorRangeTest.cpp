@@ -1,4 +1,4 @@
-// Fixed colour ranges (issue 8): the lookup table, the colour bar and the picture follow a fixed
+// Fixed colour ranges: the lookup table, the colour bar and the picture follow a fixed
 // range instead of the frame's own; auto comes back bit for bit; each quantity keeps its range.
 #include "tests/support/SyntheticSnapshot.h"
 #include "ui/vis/LayerSet.h"

@@ -1,4 +1,4 @@
-// The studio's live view (issue 8): after a short run of a small deterministic case it matches
+// The studio's live view: after a short run of a small deterministic case it matches
 // the committed baseline tests/baselines/studio_live_view.png; a fixed colour range set in the
 // view controls applies to the view at once, stays on later frames and is remembered.
 //

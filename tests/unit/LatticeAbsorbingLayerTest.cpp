@@ -98,7 +98,7 @@ void LatticeAbsorbingLayerTest::planeWaveLeavesTheOpenSide() {
     // (the simple wave of linear acoustics), in a channel periodic in y with a wall on the left
     // and the constant-pressure side on the right. A probe half-way records the incident pulse,
     // then whatever the right side sends back (a pressure side alone reflects it whole, with the
-    // opposite sign). Requirement (issue 19): reflected amplitude below 5 % of the incident.
+    // opposite sign). Requirement: reflected amplitude below 5 % of the incident.
     LatticeSetup setup;
     setup.nx = 600;
     setup.ny = 2;
