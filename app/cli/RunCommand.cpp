@@ -13,6 +13,7 @@
 #include "solver/io/PlanJson.h"
 #include "solver/io/RunIdentity.h"
 #include "solver/io/RunLock.h"
+#include "solver/io/SafeFile.h"
 #include "solver/scene/Plan.h"
 #include "solver/scene/Simulation.h"
 
@@ -38,7 +39,7 @@ struct RunOptions {
     std::string out;
     std::string resumeDir;
     double renderEveryTc = 0;
-    double untilTc = -1;
+    std::optional<double> untilTc; ///< checked against the case by checkUntilTc
     bool quiet = false;
     bool force = false;
 };
@@ -57,7 +58,8 @@ void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions
     if (spec.output.vtk && !sinksAvailable() && !options.quiet)
         std::cerr
             << "warning: this build has no VTK (LBDEM_GUI=OFF): no VTU/VTI files are written\n";
-    RunDriverOptions driverOptions{dir, options.quiet, options.untilTc, resumed, identity};
+    RunDriverOptions driverOptions{dir, options.quiet, options.untilTc.value_or(-1), resumed,
+                                   identity};
     RunDriver driver(simulation, driverOptions);
     SinkOptions sinkOptions{spec.output.vtk, spec.output.vtk_every, options.renderEveryTc,
                             spec.run.output_interval_tc, resumed};
@@ -86,7 +88,9 @@ void runCase(const RunOptions& options) {
     // machine's memory and disk, and the scene itself.
     const solver::CaseSpec spec = options.caseOptions.load();
     const solver::Plan plan = solver::makePlan(spec);
+    checkUntilTc(options.untilTc, plan);
     const fs::path dir = options.out.empty() ? "results/" + spec.name : options.out;
+    io::requireWritableFolder(dir.string()); // before the lock file is opened or made
     // One writer at a time: a folder that another process is writing is refused first, naming
     // it; a folder without a lock file gets one only once every check has passed.
     std::optional<io::RunLock> lock;
@@ -122,6 +126,7 @@ void resumeCase(const RunOptions& options) {
                    "lbdem run CASE --out " +
                        dir.string() + " --force"
                  : "was the run started with lbdem run --out " + dir.string() + "?"));
+    io::requireWritableFolder(dir.string()); // before the lock file is made
     const io::RunLock lock(dir);
     const io::CheckpointData data = io::readCheckpoint(checkpoint.string(), options.force);
     if (!data.verified && !options.quiet)
@@ -133,6 +138,7 @@ void resumeCase(const RunOptions& options) {
     const solver::CaseSpec spec =
         io::parseCase(data.case_toml, checkpoint.string() + " (case_toml)");
     const solver::Plan plan = solver::makePlan(spec);
+    checkUntilTc(options.untilTc, plan);
     applyThreads(spec);
     const auto simulation = buildSimulation(spec, plan, checkpoint.string());
     try {

@@ -53,6 +53,19 @@ void removeStaleCheckpointFiles(const std::filesystem::path& dir) {
 
 } // namespace
 
+void checkUntilTc(const std::optional<double>& untilTc, const solver::Plan& plan) {
+    if (!untilTc) return;
+    const double endTc = plan.end_time_s / plan.tc_s;
+    // A relative margin: the case's own end, printed and read back, is accepted.
+    if (std::isfinite(*untilTc) && *untilTc > 0 && *untilTc <= endTc * (1 + 1e-9)) return;
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "--until-tc %g: expected a time above 0 and at most the case's end, "
+                  "run.end_tc = %g",
+                  *untilTc, endTc);
+    throw solver::InputError(text);
+}
+
 struct RunDriver::Progress {
     std::unique_ptr<io::TimeSeriesWriter> series;
     long long outputIndex = 0;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace lbdem::cli {
@@ -27,6 +28,10 @@ struct RunDriverOptions {
     bool resumed = false;      ///< continuing from DIR/checkpoint.h5: append, do not restart
     io::RunIdentity identity;  ///< the run's id and case hash, written into every checkpoint
 };
+
+/// Refuse (InputError, exit 2) an --until-tc that is not a time within the case: not finite, not
+/// above 0, or past the case's end (a run would never reach it, or would run without end).
+void checkUntilTc(const std::optional<double>& untilTc, const solver::Plan& plan);
 
 /// Steps a Simulation and writes timeseries.csv, summary.json, checkpoint.h5 and the snapshot
 /// series into the output folder, so that a run killed at any moment leaves valid files.

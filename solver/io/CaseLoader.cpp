@@ -3,6 +3,7 @@
 
 #include "solver/core/InputError.h"
 #include "solver/core/TextDistance.h"
+#include "solver/io/SafeFile.h"
 #include "solver/scene/CaseSchema.h"
 #include "solver/scene/CaseValidation.h"
 
@@ -186,11 +187,7 @@ CaseSpec loadCase(const std::string& path, const std::vector<std::string>& overr
     if (std::filesystem::is_directory(path, error))
         throw InputError(path +
                          " is a folder, not a case file (lbdem resume takes a run's folder)");
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw InputError(path + ": cannot open the case file (does it exist?)");
-    std::ostringstream text;
-    text << file.rdbuf();
-    return parseWithOverrides(text.str(), path, overrides);
+    return parseWithOverrides(readInputFile(path, "case file"), path, overrides);
 }
 
 } // namespace lbdem::io

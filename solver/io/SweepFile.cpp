@@ -3,6 +3,7 @@
 
 #include "solver/core/InputError.h"
 #include "solver/core/TextDistance.h"
+#include "solver/io/SafeFile.h"
 
 #include <toml++/toml.h>
 
@@ -110,11 +111,11 @@ std::vector<SweepVariant> variantArray(const toml::node& node, const std::string
 
 SweepSpec loadSweep(const std::string& path) {
     toml::table root;
+    const std::string text = readInputFile(path, "sweep file");
     try {
-        root = toml::parse_file(path);
+        root = toml::parse(text, path);
     } catch (const toml::parse_error& error) {
         const int line = static_cast<int>(error.source().begin.line);
-        if (!std::filesystem::exists(path)) throw InputError(path + ": cannot open the sweep file");
         throw InputError(path, line, "", "is not valid TOML: " + std::string(error.description()));
     }
     SweepSpec sweep;
