@@ -1,15 +1,8 @@
 // Formatting a case as documented TOML, and atomic file writes.
 #include "solver/io/CaseWriter.h"
 
+#include "solver/io/SafeFile.h"
 #include "solver/scene/CaseSchema.h"
-
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <stdexcept>
-#include <unistd.h>
 
 namespace lbdem::io {
 
@@ -41,24 +34,8 @@ std::string formatCase(const solver::CaseSpec& spec) {
     return text;
 }
 
-void writeFileAtomically(const std::string& path, const std::string& text) {
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file)
-            throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
-        file << text;
-        file.flush();
-        if (!file)
-            throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::filesystem::remove(temporary);
-        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " +
-                                 error.message());
-    }
+void writeFileAtomically(const std::string& path, const std::string& text, bool durable) {
+    replaceFile(path, text, durable);
 }
 
 void writeCase(const solver::CaseSpec& spec, const std::string& path) {

@@ -13,7 +13,8 @@ std::string formatCase(const solver::CaseSpec& spec);
 /// Write formatCase(spec) to path atomically (temporary file + rename); throws on I/O failure.
 void writeCase(const solver::CaseSpec& spec, const std::string& path);
 
-/// Write text to path atomically: a sibling temporary file renamed over it.
-void writeFileAtomically(const std::string& path, const std::string& text);
+/// Write text to path atomically: a sibling temporary file renamed over it (removed when the
+/// write fails), flushed to the disk first when durable (io::replaceFile).
+void writeFileAtomically(const std::string& path, const std::string& text, bool durable = false);
 
 } // namespace lbdem::io

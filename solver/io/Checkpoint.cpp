@@ -5,6 +5,7 @@
 
 #include "solver/core/Checksum.h"
 #include "solver/core/InputError.h"
+#include "solver/io/SafeFile.h"
 
 #include <cerrno>
 #include <cmath>
@@ -153,37 +154,47 @@ void verify(const std::string& path, const CheckpointData& data,
     }
 }
 
-/// Why writing to path failed, as far as the system tells: errno and the space left.
-std::string writeFailure(const std::string& path) {
-    std::string cause = errno != 0 ? std::strerror(errno) : "unknown cause";
-    std::error_code error;
-    const auto space = std::filesystem::space(std::filesystem::path(path).parent_path().empty()
-                                                  ? std::filesystem::path(".")
-                                                  : std::filesystem::path(path).parent_path(),
-                                              error);
-    if (!error && space.available < (std::uintmax_t(1) << 20)) cause = "the disk is full";
-    return "cannot write the checkpoint " + path + ": " + cause;
-}
-
-void writeFile(const std::string& path, const CheckpointData& data) {
-    Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
-                "cannot create " + path);
-    writeStringAttribute(file.get(), kCaseAttribute, data.case_toml);
-    writeStringAttribute(file.get(), "format",
-                         "lbdem checkpoint " + std::to_string(kFormatVersion));
-    writeStringAttribute(file.get(), kChecksumAttribute, checksumOf(data));
-    writeStringAttribute(file.get(), kRunIdAttribute, data.run_id);
-    writeStringAttribute(file.get(), kCaseHashAttribute, data.case_hash);
-    Handle reals(H5Gcreate2(file.get(), kRealGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                 H5Gclose, "cannot create group");
+/// Write the case, its identity, the checksum and every array of data into the open HDF5 file.
+void writeContent(hid_t file, const CheckpointData& data) {
+    writeStringAttribute(file, kCaseAttribute, data.case_toml);
+    writeStringAttribute(file, "format", "lbdem checkpoint " + std::to_string(kFormatVersion));
+    writeStringAttribute(file, kChecksumAttribute, checksumOf(data));
+    writeStringAttribute(file, kRunIdAttribute, data.run_id);
+    writeStringAttribute(file, kCaseHashAttribute, data.case_hash);
+    Handle reals(H5Gcreate2(file, kRealGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                 "cannot create group");
     for (const auto& [name, values] : data.state.reals)
         writeDataset(reals.get(), encodeName(name), values, H5T_NATIVE_DOUBLE);
-    Handle integers(H5Gcreate2(file.get(), kIntegerGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+    Handle integers(H5Gcreate2(file, kIntegerGroup, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                     H5Gclose, "cannot create group");
     for (const auto& [name, values] : data.state.integers)
         writeDataset(integers.get(), encodeName(name), values, H5T_NATIVE_INT64);
+}
+
+/// The checkpoint as the bytes of an HDF5 file, built in memory (HDF5's core driver without a
+/// backing store): HDF5 never writes to the disk, since HDF5 1.10 crashes at exit after a file
+/// whose close failed (a full disk); the caller writes the bytes with its own error handling.
+std::string fileImage(const CheckpointData& data) {
+    std::size_t bytes = data.case_toml.size();
+    for (const auto& [name, values] : data.state.reals)
+        bytes += values.size() * sizeof(double) + name.size();
+    for (const auto& [name, values] : data.state.integers)
+        bytes += values.size() * sizeof(std::int64_t) + name.size();
+    Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create a property list");
+    // One allocation of about the final size: the arrays and room for HDF5's metadata.
+    if (H5Pset_fapl_core(access.get(), bytes + (bytes >> 4) + (std::size_t(1) << 16), false) < 0)
+        throw std::runtime_error("cannot select HDF5's in-memory driver");
+    Handle file(H5Fcreate("checkpoint.h5", H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose,
+                "cannot create the checkpoint in memory");
+    writeContent(file.get(), data);
+    // Without a flush the image's superblock still gives the end of the empty file.
     if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
-        throw std::runtime_error("cannot flush " + path);
+        throw std::runtime_error("cannot flush the checkpoint in memory");
+    const ssize_t size = H5Fget_file_image(file.get(), nullptr, 0);
+    std::string image(size > 0 ? static_cast<std::size_t>(size) : 0, '\0');
+    if (size <= 0 || H5Fget_file_image(file.get(), image.data(), image.size()) != size)
+        throw std::runtime_error("cannot take the image of the checkpoint");
+    return image;
 }
 
 /// The string attribute called name, or "" when the file has none.
@@ -222,21 +233,21 @@ CheckpointData readFile(const std::string& path, bool acceptUnverified) {
 
 void writeCheckpoint(const std::string& path, const CheckpointData& data) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // errors become one sentence, not an HDF5 trace
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-    errno = 0;
+    std::string image;
     try {
-        writeFile(temporary, data);
-    } catch (const std::exception&) {
-        const std::string failure = writeFailure(path);
-        std::remove(temporary.c_str());
-        throw std::runtime_error(failure);
+        image = fileImage(data);
+    } catch (const std::exception& error) {
+        throw std::runtime_error("cannot write the checkpoint " + path + ": " + error.what());
     }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::remove(temporary.c_str());
-        throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " +
-                                 error.message());
+    // Durable: the previous checkpoint is replaced only by one that is on the disk. On failure
+    // (a full disk) the temporary file is removed and the previous checkpoint stays.
+    const bool previous = std::filesystem::exists(path);
+    try {
+        replaceFile(path, image, true);
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(error.what() + std::string(previous ? "; the previous checkpoint "
+                                                                       "is left as it was"
+                                                                     : ""));
     }
 }
 

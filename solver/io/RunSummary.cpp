@@ -55,8 +55,9 @@ nlohmann::json runSummary(const solver::Simulation& simulation, bool finished,
 
 void writeRunSummary(const std::filesystem::path& dir, const solver::Simulation& simulation,
                      bool finished, const std::string& stopReason) {
+    // Durable: a sweep or study that reads it after a crash of the machine finds the last state.
     writeFileAtomically((dir / "summary.json").string(),
-                        runSummary(simulation, finished, stopReason).dump(2) + "\n");
+                        runSummary(simulation, finished, stopReason).dump(2) + "\n", true);
 }
 
 std::vector<std::string> runSummaryNumbers(const solver::CaseSpec& spec) {

@@ -1,6 +1,9 @@
 // CSV time series writer and reader.
 #include "solver/io/TimeSeriesWriter.h"
 
+#include "solver/core/InputError.h"
+#include "solver/io/SafeFile.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -70,7 +73,9 @@ void TimeSeriesWriter::append(const std::map<std::string, double>& metrics) {
     }
     m_file << "\n";
     m_file.flush();
-    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));
+    if (!m_file)
+        throw std::runtime_error("cannot write " + m_path + ": " +
+                                 writeFailureCause(m_path, errno));
 }
 
 std::vector<double> TimeSeriesTable::column(const std::string& name) const {

@@ -49,8 +49,9 @@ double outputNodes(const CaseSpec& spec, const Plan& plan) {
     return std::ceil(plan.nx / every) * std::ceil(plan.ny / every);
 }
 
-/// Upper bound of the bytes a run writes: per output a timeseries row and profiles, VTK files
-/// every vtk_every outputs, and one checkpoint (each is written over the previous one).
+/// Upper bound of the disk space a run needs at its peak: per output a timeseries row and
+/// profiles, VTK files every vtk_every outputs, and two checkpoints (each new one is written
+/// in full next to the previous one before it replaces it).
 double estimateOutputBytes(const CaseSpec& spec, const Plan& plan) {
     const double interval = spec.run.output_interval_tc * plan.tc_s;
     const double outputs = interval > 0 ? std::floor(plan.end_time_s / interval + 1e-9) + 2 : 2;
@@ -61,7 +62,7 @@ double estimateOutputBytes(const CaseSpec& spec, const Plan& plan) {
         outputNodes(spec, plan) * kVtiBytesPerNode + grains * (kParticleBytes + kContactBytes);
     const double nodes = static_cast<double>(plan.nx) * plan.ny;
     const double checkpoint = nodes * kCheckpointBytesPerNode + grains * kCheckpointBytesPerGrain;
-    return outputs * (kRowBytes + kProfileBytes) + vtkOutputs * vtkBytes + checkpoint;
+    return outputs * (kRowBytes + kProfileBytes) + vtkOutputs * vtkBytes + 2 * checkpoint;
 }
 
 std::string format(const char* pattern, double a, double b = 0) {
@@ -248,10 +249,12 @@ Plan makePlan(const CaseSpec& spec) {
         spec.fluid.storage == lattice::PopulationStorage::Float ? sizeof(float) : sizeof(double);
     // One distribution set (updated in place), one flag byte, a side index and one solid
     // fraction per node, the coupling's owner map, ~256 B per grain; while a checkpoint is
-    // written, a double copy of the state; while an output is written, the snapshot's and the
-    // VTK image's fluid fields.
+    // written, three double copies of the state (the saved state, HDF5's in-memory file and
+    // the image written from it); while an output is written, the snapshot's and the VTK
+    // image's fluid fields.
     plan.memory_bytes = static_cast<std::size_t>(
-        nodes * (lattice::kQ * bytesPerValue + 1 + 4 + 8 + 4) + nodes * kCheckpointBytesPerNode +
+        nodes * (lattice::kQ * bytesPerValue + 1 + 4 + 8 + 4) +
+        3 * nodes * kCheckpointBytesPerNode +
         outputNodes(spec, plan) * (kSnapshotBytesPerNode + kVtiBytesPerNode) +
         static_cast<double>(plan.grains) * 256);
     plan.output_bytes = static_cast<std::size_t>(estimateOutputBytes(spec, plan));

@@ -42,7 +42,7 @@ struct Plan {
     double end_time_s = 0;      ///< physical end time
     long long steps = 0;        ///< fluid (or DEM) steps to the end time
     std::size_t memory_bytes = 0;  ///< estimated solver memory
-    std::size_t output_bytes = 0;  ///< estimated size of everything the run writes (upper bound)
+    std::size_t output_bytes = 0;  ///< peak disk use of the outputs (two checkpoints; upper bound)
     double estimated_run_s = 0;    ///< rough wall time on this class of machine
     ColumnGeometry column;         ///< the initial column (zero when there are no grains)
     int absorbing_layer_nodes = 0; ///< sponge thickness inside the pressure sides (0: none)

@@ -1,9 +1,12 @@
 // Off-screen vtkRenderWindow -> vtkWindowToImageFilter -> PNG.
 #include "ui/vis/OffscreenRenderer.h"
 
+#include "solver/io/SafeFile.h"
 #include "ui/vis/HeadlessDisplay.h"
 #include "ui/vis/SceneView.h"
+#include "ui/vis/VtkErrors.h"
 
+#include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -11,6 +14,8 @@
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <cerrno>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -55,9 +60,18 @@ void writePng(vtkImageData* image, const std::string& path) {
     vtkNew<vtkPNGWriter> writer;
     writer->SetInputData(image);
     writer->SetFileName(temporary.c_str());
-    writer->Write();
-    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary))
-        throw std::runtime_error("cannot write " + path);
+    {
+        const VtkErrorCatcher errors; // one sentence below instead of VTK's trace
+        errno = 0;
+        writer->Write();
+        if (errors.failed() || writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary)) {
+            const int cause =
+                writer->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError ? ENOSPC : errno;
+            std::remove(temporary.c_str());
+            throw std::runtime_error("cannot write " + path + ": " +
+                                     io::writeFailureCause(path, cause));
+        }
+    }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
     if (error) throw std::runtime_error("cannot replace " + path + ": " + error.message());

@@ -1,6 +1,8 @@
 // .pvd collections: written by hand (the format is five lines), read with VTK's XML parser.
 #include "ui/vis/PvdSeries.h"
 
+#include "solver/io/SafeFile.h"
+
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLDataElement.h>
@@ -51,17 +53,7 @@ std::string shortestText(double value) {
 } // namespace
 
 void writeTextAtomically(const std::string& path, const std::string& text) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error("cannot write " + temporary);
-        out << text;
-        out.flush();
-        if (!out) throw std::runtime_error("cannot write " + temporary);
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) throw std::runtime_error("cannot replace " + path + ": " + error.message());
+    io::replaceFile(path, text, false);
 }
 
 PvdSeries::PvdSeries(std::string path, bool resume) : m_path(std::move(path)) {

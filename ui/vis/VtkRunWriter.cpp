@@ -1,8 +1,11 @@
 // VTK XML output of a run: binary zlib-compressed data sets, atomically renamed, plus .pvd series.
 #include "ui/vis/VtkRunWriter.h"
 
+#include "solver/io/SafeFile.h"
 #include "ui/vis/VtkDataSets.h"
+#include "ui/vis/VtkErrors.h"
 
+#include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLImageDataWriter.h>
@@ -10,6 +13,7 @@
 #include <vtkXMLWriter.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -18,7 +22,9 @@ namespace lbdem::vis {
 
 namespace {
 
-/// Writes `data` with `writer` to `dir`/`name` through a temporary file and a rename.
+/// Writes `data` with `writer` to `dir`/`name` through a temporary file and a rename; on failure
+/// (a full disk) the temporary file is removed, the frame in place (if any) stays, and one
+/// sentence says why instead of VTK's trace.
 void writeDataSet(vtkXMLWriter* writer, vtkDataObject* data, const std::string& dir,
                   const std::string& name) {
     const std::string path = dir + "/" + name;
@@ -27,10 +33,23 @@ void writeDataSet(vtkXMLWriter* writer, vtkDataObject* data, const std::string& 
     writer->SetFileName(temporary.c_str());
     writer->SetDataModeToBinary();
     writer->SetCompressorTypeToZLib();
-    if (writer->Write() != 1) throw std::runtime_error("cannot write " + temporary);
+    const VtkErrorCatcher errors;
+    errno = 0;
+    const bool written =
+        writer->Write() == 1 && !errors.failed() && writer->GetErrorCode() == vtkErrorCode::NoError;
+    if (!written) {
+        const int cause =
+            writer->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError ? ENOSPC : errno;
+        std::remove(temporary.c_str());
+        throw std::runtime_error("cannot write " + path + ": " +
+                                 io::writeFailureCause(path, cause));
+    }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
-    if (error) throw std::runtime_error("cannot replace " + path + ": " + error.message());
+    if (error) {
+        std::remove(temporary.c_str());
+        throw std::runtime_error("cannot replace " + path + ": " + error.message());
+    }
 }
 
 /// Writes an unstructured grid as .vtu.
