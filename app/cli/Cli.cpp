@@ -2,6 +2,7 @@
 #include "app/cli/Cli.h"
 
 #include "app/cli/Commands.h"
+#include "app/cli/StopSignals.h"
 #include "campaign/JobRunner.h"
 #include "solver/core/InputError.h"
 
@@ -20,7 +21,9 @@ int runCli(int argc, char** argv) {
                "failed runs "
                "in a sweep or study); 2 bad input (case, options, output folder, checkpoint); 3 a "
                "run stopped by "
-               "a stability guard (lattice or DEM; summary.json gives the diagnosis).");
+               "a stability guard (lattice or DEM; summary.json gives the diagnosis); 130 or 143 "
+               "a run stopped by SIGINT or SIGTERM after writing its checkpoint (lbdem resume "
+               "continues it).");
     app.require_subcommand(1);
     app.set_version_flag("--version", "lbdem 0.1.0");
     int exitCode = kExitOk;
@@ -50,6 +53,9 @@ int runCli(int argc, char** argv) {
     } catch (const solver::SimulationError& error) {
         std::cerr << "lbdem: the simulation stopped: " << error.what() << "\n";
         return kExitUnstable;
+    } catch (const StoppedBySignal& stopped) {
+        std::cerr << "lbdem: " << stopped.what() << "\n";
+        return stopped.exitCode();
     } catch (const std::bad_alloc&) {
         std::cerr << "lbdem: out of memory (lbdem info CASE estimates what a case needs)\n";
         return kExitFailure;

@@ -1,5 +1,6 @@
 // The run loop of `lbdem run` and `lbdem resume`.
 #include "app/cli/RunDriver.h"
+#include "app/cli/StopSignals.h"
 #include "campaign/Duration.h"
 
 #include "solver/core/InputError.h"
@@ -73,6 +74,7 @@ struct RunDriver::Progress {
     double nextCheckpointS = 0;
     double lastReportWall = -1e9;
     long long firstStep = 0;
+    long long lastCheckpointStep = -1;
     bool lineOpen = false; // a progress line without its newline is on stderr
     Clock::time_point start = Clock::now();
 };
@@ -120,11 +122,24 @@ void RunDriver::writeCheckpoint() {
     data.run_id = m_options.identity.run_id;
     data.case_hash = m_options.identity.case_hash;
     io::writeCheckpoint((m_options.dir / "checkpoint.h5").string(), data);
+    m_progress->lastCheckpointStep = m_simulation.stepIndex();
 }
 
 void RunDriver::writeSummary(bool finished, const std::string& stopReason) {
     accountWork();
     io::writeRunSummary(m_options.dir, m_simulation, finished, stopReason);
+}
+
+void RunDriver::stopOnSignal(int signal) {
+    closeProgressLine();
+    // The step under way has ended: the checkpoint holds this very step, so that lbdem resume
+    // goes on exactly as the run would have.
+    if (m_simulation.stepIndex() != m_progress->lastCheckpointStep) writeCheckpoint();
+    writeSummary(false);
+    char text[64];
+    std::snprintf(text, sizeof text, "%.4g", m_simulation.timeOverTc());
+    throw StoppedBySignal(signal, std::string("stopped at t/τc = ") + text + "; lbdem resume " +
+                                      m_options.dir.string() + " continues");
 }
 
 void RunDriver::reportProgress(double wallSeconds, bool last) {
@@ -194,6 +209,7 @@ void RunDriver::run() {
     startSeries(outputInterval, checkpointInterval);
 
     p.start = Clock::now();
+    const StopSignals stopSignals; // from here a signal stops the run at the end of a step
     try {
         while (true) {
             if (m_simulation.time() >= p.nextOutputS - halfStep) {
@@ -206,6 +222,7 @@ void RunDriver::run() {
                 p.nextCheckpointS += checkpointInterval;
             }
             if (m_simulation.time() >= endS - halfStep) break;
+            if (const int signal = StopSignals::stopSignal()) stopOnSignal(signal);
             m_simulation.step();
             reportProgress(seconds(p.start), false);
         }

@@ -46,10 +46,12 @@ public:
     /// Run to the end time (a resumed run already there is left untouched); returns when
     /// finished. Throws SimulationError when unstable (the
     /// outputs and checkpoint written so far stay valid; summary.json then says finished = false
-    /// and gives the diagnosis as stop_reason).
+    /// and gives the diagnosis as stop_reason). A SIGINT or SIGTERM ends the step under way, then
+    /// writes a checkpoint and throws StoppedBySignal (lbdem resume continues the run).
     void run();
 
 private:
+    [[noreturn]] void stopOnSignal(int signal);
     struct Progress;
     void startSeries(double outputInterval, double checkpointInterval);
     void writeOutput();

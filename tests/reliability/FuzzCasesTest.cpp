@@ -5,17 +5,27 @@
 // folders given another run's checkpoint make `lbdem resume` exit 2 changing no file, and
 // random pairs of writers started together on one folder (run --force, resume) leave one
 // running and the other refused with exit 2 naming its pid, and a consistent time series.
+// Files that are not regular (a FIFO, devices, a socket, a folder) or too large, given as the
+// case or sweep file of every command, are refused at once; SIGTERM or SIGINT at a random moment
+// of a run stops it with 143 or 130, and a resume ends with the time series of a run never
+// stopped.
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <algorithm>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
 #include <sstream>
 #include <string>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
 #include <vector>
 
 class FuzzCasesTest : public QObject {
@@ -26,6 +36,8 @@ private slots:
     void runSurvivesExtremeValues();
     void foreignCheckpointsRefused();
     void concurrentWritersRefused();
+    void nonRegularFilesRefused();
+    void signalsAtRandomMoments();
 
 private:
     std::vector<std::string> m_lines;
@@ -285,6 +297,23 @@ std::vector<long long> steps(const std::string& dir) {
     return column;
 }
 
+/// A UNIX socket file at path (what a case path must never be), or false.
+bool makeSocket(const std::string& path) {
+    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    if (fd < 0 || path.size() >= sizeof address.sun_path) return false;
+    std::strcpy(address.sun_path, path.c_str());
+    const bool bound = ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
+    ::close(fd); // the file stays
+    return bound;
+}
+
+QByteArray fileBytes(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
 } // namespace
 
 void FuzzCasesTest::foreignCheckpointsRefused() {
@@ -361,6 +390,103 @@ void FuzzCasesTest::concurrentWritersRefused() {
         }
         if (!increasing)
             failures << dir + ": timeseries.csv does not hold each step once, in order";
+    }
+    QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
+}
+
+void FuzzCasesTest::nonRegularFilesRefused() {
+    const std::string fifo = m_dir.filePath("case.fifo").toStdString();
+    const std::string socket = m_dir.filePath("case.sock").toStdString();
+    const std::string huge = m_dir.filePath("huge.toml").toStdString();
+    QCOMPARE(::mkfifo(fifo.c_str(), 0600), 0);
+    QVERIFY(makeSocket(socket));
+    std::ofstream(huge) << "schema = 1\n" << std::string(3 << 20, '#') << "\n";
+    const QStringList files{QString::fromStdString(fifo),
+                            QString::fromStdString(socket),
+                            "/dev/zero",
+                            "/dev/null",
+                            "/dev/urandom",
+                            m_dir.path(),
+                            QString::fromStdString(huge)};
+    QStringList failures;
+    for (const QString& file : files) {
+        const QString out = m_dir.filePath("non_regular_out");
+        const QList<QStringList> commands{
+            {"info", file},
+            {"run", file, "--out", out, "--quiet"},
+            {"study", file, "--vary", "fluid.resolution=4,5", "--out", out, "--quiet"},
+            {"sweep", file, "--out", out, "--quiet"},
+            {"bench", "--case", file}};
+        for (const QStringList& command : commands) {
+            QElapsedTimer clock;
+            clock.start();
+            const Outcome outcome = runLbdem(command, 10000);
+            const bool oneLine = outcome.message.count('\n') == 1 && outcome.message.endsWith('\n');
+            if (outcome.code != 2 || !oneLine || clock.elapsed() > 5000 || QFile::exists(out))
+                failures << QString("%1: exit %2 after %3 ms: %4")
+                                .arg(command.join(' '))
+                                .arg(outcome.code)
+                                .arg(clock.elapsed())
+                                .arg(outcome.message.left(300));
+        }
+    }
+    QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
+}
+
+void FuzzCasesTest::signalsAtRandomMoments() {
+    std::mt19937 random(kSeed + 4);
+    const auto runArguments = [](const QString& out) {
+        return QStringList{"run",
+                           LBDEM_SOURCE_DIR "/sample_cases/default.toml",
+                           "--out",
+                           out,
+                           "--quiet",
+                           "--set",
+                           "grains.count=150",
+                           "--set",
+                           "grains.packing=0.79",
+                           "--set",
+                           "fluid.enabled=false",
+                           "--set",
+                           "run.end_tc=0.3",
+                           "--set",
+                           "run.output_interval_tc=0.02",
+                           "--set",
+                           "output.vtk=false"};
+    };
+    const QString reference = m_dir.filePath("signal_reference");
+    QCOMPARE(runLbdem(runArguments(reference), 300000).code, 0);
+    const QByteArray expected = fileBytes(reference + "/timeseries.csv");
+    QStringList failures;
+    for (int k = 0; k < 3; ++k) {
+        const QString out = m_dir.filePath(QString("signal_%1").arg(k));
+        const int signal = pick(random, 2) ? SIGTERM : SIGINT;
+        const int rows = 1 + static_cast<int>(pick(random, 10)); // rows written before the signal
+        QProcess process;
+        process.start(LBDEM_EXECUTABLE, runArguments(out));
+        while (fileBytes(out + "/timeseries.csv").count('\n') < rows + 1 &&
+               !process.waitForFinished(5))
+            ;
+        QTest::qWait(static_cast<int>(pick(random, 30))); // anywhere within a step or a write
+        ::kill(static_cast<pid_t>(process.processId()), signal);
+        process.waitForFinished(120000);
+        const int code = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+        const QString message = QString::fromUtf8(process.readAllStandardError());
+        if (code != 0 && (code != 128 + signal || !message.contains("stopped at t/")))
+            failures << QString("signal %1 after %2 rows: exit %3: %4")
+                            .arg(signal)
+                            .arg(rows)
+                            .arg(code)
+                            .arg(message.left(300));
+        const Outcome resumed = runLbdem({"resume", out, "--quiet"}, 300000);
+        if (resumed.code != 0 || fileBytes(out + "/timeseries.csv") != expected)
+            failures << QString("signal %1 after %2 rows: resume exit %3, time series %4: %5")
+                            .arg(signal)
+                            .arg(rows)
+                            .arg(resumed.code)
+                            .arg(fileBytes(out + "/timeseries.csv") == expected ? "identical"
+                                                                                : "differs")
+                            .arg(resumed.message.left(300));
     }
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
 }
