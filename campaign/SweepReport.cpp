@@ -69,7 +69,11 @@ Row readRow(const SweepEntry& entry) {
     }
     try {
         const auto summary = nlohmann::json::parse(file);
-        row.status = summary.value("finished", false) ? "finished" : "unfinished";
+        // A run the stability guard stopped says why in stop_reason: unstable, not unfinished
+        // (which a resume would finish), as in the ensemble table.
+        row.status = summary.value("finished", false)  ? "finished"
+                     : summary.contains("stop_reason") ? "unstable"
+                                                       : "unfinished";
         row.runout = numberOr(summary, "runout_final");
         row.kePeak = numberOr(summary, "ke_peak");
         row.tKePeak = numberOr(summary, "t_ke_peak_over_tc");

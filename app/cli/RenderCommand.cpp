@@ -2,6 +2,7 @@
 #include "app/cli/Cli.h"
 #include "app/cli/Commands.h"
 #include "solver/core/InputError.h"
+#include "solver/io/SafeFile.h"
 #include "ui/vis/ForceChainLayer.h"
 #include "ui/vis/LayerSet.h"
 #include "ui/vis/OffscreenRenderer.h"
@@ -110,6 +111,9 @@ void render(const RenderOptions& options) {
     layers.fluidRange() = parseRange("--fluid-range", options.fluidRange);
     layers.grainRange() = parseRange("--grain-range", options.grainRange);
     const vis::VtkRunReader reader(options.runDir);
+    io::requireWritableFolder(options.all || std::filesystem::is_directory(options.png)
+                                  ? options.png
+                                  : std::filesystem::path(options.png).parent_path().string());
     const std::vector<int> frames = chosenFrames(options, reader);
     vis::OffscreenRenderer renderer(width, height, layers);
     renderer.view().forceChains().setThreshold(options.chainThreshold);

@@ -7,6 +7,7 @@
 #include "campaign/RunJobs.h"
 #include "campaign/StudyPlan.h"
 #include "campaign/figures/StudyPlot.h"
+#include "solver/io/SafeFile.h"
 #include "solver/scene/SceneKind.h"
 
 #include <CLI/CLI.hpp>
@@ -94,6 +95,7 @@ int runStudy(const StudyOptions& options) {
     // Bad input fails here, before any run.
     campaign::StudyPlan plan = campaign::planStudy(request, campaign::selfExecutable());
     const StudySpec& study = plan.study;
+    io::requireWritableFolder(request.out); // exit 2, as for every command's output folder
     fs::create_directories(request.out);
     if (!campaign::studyPlotAvailable() && !options.quiet)
         std::cerr << "note: this build has no VTK (LBDEM_GUI=OFF): study.png is not drawn\n";

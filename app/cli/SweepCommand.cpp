@@ -11,6 +11,7 @@
 #include "campaign/figures/SweepFigures.h"
 #include "solver/core/InputError.h"
 #include "solver/io/RunLock.h"
+#include "solver/io/SafeFile.h"
 #include "solver/io/SweepFile.h"
 
 #include <CLI/CLI.hpp>
@@ -122,6 +123,7 @@ int runSweep(const SweepOptions& options) {
         report(sweep.name, entries, options);
         return kExitOk;
     }
+    io::requireWritableFolder(out.string()); // exit 2, as for every command's output folder
     // One sweep at a time in a folder; each run locks its own folder too, so that a run left
     // going by an earlier sweep is never written twice.
     const io::RunLock lock(out);

@@ -37,6 +37,21 @@ std::string formatValue(double value) {
     return buffer;
 }
 
+/// The number in a cell (NaN when empty); throws InputError naming the file, line and column
+/// when the cell is not a number (a damaged file).
+double cellValue(const std::string& cell, const std::string& path, int line,
+                 const std::vector<std::string>& columns, std::size_t column) {
+    if (cell.empty()) return std::numeric_limits<double>::quiet_NaN();
+    char* end = nullptr;
+    const double value = std::strtod(cell.c_str(), &end); // subnormals read back too
+    if (end != cell.c_str() && *end == '\0') return value;
+    const std::string name = column < columns.size() ? columns[column] : "beyond the header";
+    throw solver::InputError(
+        path, line, "",
+        "the cell '" + cell.substr(0, 40) + "' of column " + name +
+            " is not a number: the file is damaged (restore it, or run the case again)");
+}
+
 } // namespace
 
 double printedValue(double value) {
@@ -96,12 +111,11 @@ TimeSeriesTable readTimeSeries(const std::string& path) {
     std::string line;
     if (!std::getline(file, line)) return table;
     table.columns = splitLine(line);
-    while (std::getline(file, line)) {
+    for (int number = 2; std::getline(file, line); ++number) {
         if (line.empty()) continue;
         std::vector<double> row;
         for (const auto& cell : splitLine(line))
-            row.push_back(cell.empty() ? std::numeric_limits<double>::quiet_NaN()
-                                       : std::stod(cell));
+            row.push_back(cellValue(cell, path, number, table.columns, row.size()));
         table.rows.push_back(std::move(row));
     }
     return table;

@@ -39,7 +39,8 @@ struct TimeSeriesTable {
     std::vector<double> column(const std::string& name) const;
 };
 
-/// Load a timeseries.csv; throws std::runtime_error when unreadable.
+/// Load a timeseries.csv; throws std::runtime_error when unreadable, InputError naming the file,
+/// line and column when a cell is not a number.
 TimeSeriesTable readTimeSeries(const std::string& path);
 
 } // namespace lbdem::io

@@ -36,6 +36,10 @@ std::vector<CaseProblem> validateCase(const CaseSpec& spec) {
         if (spec.grains.count < 1)
             problems.push_back(
                 {"grains.count", "must be at least 1: a column collapse needs grains"});
+        // The generator refuses 0.9 itself (a hexagonal packing is 0.907): say so with the key.
+        if (spec.grains.packing >= 0.9)
+            problems.push_back({"grains.packing", "must be below 0.9: random discs do not pack "
+                                                  "that densely (dense 0.83, loose 0.79)"});
         if (spec.domain.gravity_m_s2 <= 0)
             problems.push_back({"domain.gravity_m_s2",
                                 "must be positive: the column settles under gravity and "

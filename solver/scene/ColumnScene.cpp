@@ -74,9 +74,10 @@ void ColumnScene::build(const CaseSpec& spec) {
             std::to_string(m_packing.height) + " m high) does not fit the domain (domain.width = " +
             std::to_string(width) + " m, domain.height = " + std::to_string(height) + " m)");
     if (!m_packing.converged)
-        throw SimulationError("the packing generator reached " +
-                              std::to_string(m_packing.fraction) +
-                              " instead of grains.packing = " + std::to_string(m_packing.target));
+        throw SimulationError("key 'grains.packing': the packing generator reached " +
+                              std::to_string(m_packing.fraction) + " instead of " +
+                              std::to_string(m_packing.target) +
+                              "; ask for a packing nearer what it reached");
     m_system.reserve(m_packing.x.size());
     m_system.addWall(Vec2(0, 0), Vec2(width, 0));
     m_system.addWall(Vec2(0, 0), Vec2(0, height));

@@ -295,7 +295,7 @@ void SweepEnsembleTest::reportFiles() {
              md.c_str());
     const std::string runs = support::readText(m_out / "runs.csv");
     QCOMPARE(std::count(runs.begin(), runs.end(), '\n'), 25L); // header + 24 runs
-    QVERIFY2(runs.find("\ndense_0deg_submerged_s3,0.83,0.0,submerged,unfinished,") !=
+    QVERIFY2(runs.find("\ndense_0deg_submerged_s3,0.83,0.0,submerged,unstable,") !=
                  std::string::npos,
              runs.c_str());
 }

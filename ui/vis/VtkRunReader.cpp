@@ -3,12 +3,15 @@
 
 #include "solver/core/InputError.h"
 #include "ui/vis/VtkDataSets.h"
+#include "ui/vis/VtkErrors.h"
 
+#include <vtkErrorCode.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLImageDataReader.h>
+#include <vtkXMLReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <cmath>
@@ -27,6 +30,17 @@ std::string siblingFile(const std::string& particlesFile, const std::string& ser
     return series + particlesFile.substr(underscore, dot - underscore) + "." + extension;
 }
 
+/// Run a reader of path; throws InputError naming the file when VTK reports an error (a damaged
+/// or truncated file), so that nothing is drawn from a partial data set.
+void updateReader(vtkXMLReader* reader, const std::string& path) {
+    const VtkErrorCatcher errors;
+    reader->Update();
+    if (errors.failed() || reader->GetErrorCode() != vtkErrorCode::NoError)
+        throw solver::InputError(
+            path + " is damaged or not a VTK file written by lbdem" +
+            (errors.firstError().empty() ? std::string() : " (" + errors.firstError() + ")"));
+}
+
 /// Reads an unstructured grid, or returns null when the file does not exist.
 vtkSmartPointer<vtkUnstructuredGrid> readGrid(const std::string& path, bool required) {
     if (!std::filesystem::exists(path)) {
@@ -35,7 +49,7 @@ vtkSmartPointer<vtkUnstructuredGrid> readGrid(const std::string& path, bool requ
     }
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     reader->SetFileName(path.c_str());
-    reader->Update();
+    updateReader(reader, path);
     vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
     if (!grid || (required && grid->GetPointData()->GetArray("radius") == nullptr &&
                   grid->GetNumberOfPoints() > 0))
@@ -86,7 +100,7 @@ solver::Snapshot VtkRunReader::read(int frame) const {
     if (std::filesystem::exists(fluidPath)) {
         vtkNew<vtkXMLImageDataReader> reader;
         reader->SetFileName(fluidPath.c_str());
-        reader->Update();
+        updateReader(reader, fluidPath);
         fluid = reader->GetOutput();
     }
     solver::Snapshot snapshot = snapshotFromVtk(particles, contacts, fluid, outline);
