@@ -8,7 +8,7 @@
 # skipped (exit 77) only where no tmpfs can be mounted.
 # Usage: FullDisk.sh LBDEM CASE WORK_DIR
 set -u
-lbdem=$1 case=$2 work=$3
+lbdem=$(realpath "$1") case=$(realpath "$2") work=$3
 
 if [ -z "${LBDEM_FULL_DISK_NAMESPACE:-}" ]; then
     rm -rf "$work" && mkdir -p "$work" || exit 1
