@@ -5,6 +5,8 @@
 // Exit 0 when the bytes are identical; 1 when they differ, with the largest difference printed
 // relative to its column's scale (the largest |golden value| of the column, so that a column that
 // passes through zero is judged on its own scale); 2 on unreadable or malformed files.
+#include "solver/io/TimeSeriesWriter.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,10 +18,7 @@
 
 namespace {
 
-struct Table {
-    std::string header;
-    std::vector<std::vector<double>> rows;
-};
+using lbdem::io::TimeSeriesTable;
 
 // The whole file as bytes, or false when it cannot be read.
 bool readBytes(const char* path, std::string& bytes) {
@@ -31,44 +30,8 @@ bool readBytes(const char* path, std::string& bytes) {
     return true;
 }
 
-// Splits CSV text into its header line and rows of numbers; false names the first bad line.
-bool parseTable(const std::string& bytes, Table& table, std::string& error) {
-    std::istringstream lines(bytes);
-    std::string line;
-    if (!std::getline(lines, table.header)) {
-        error = "no header line";
-        return false;
-    }
-    for (int number = 2; std::getline(lines, line); ++number) {
-        std::vector<double> row;
-        std::istringstream fields(line);
-        std::string field;
-        while (std::getline(fields, field, ',')) {
-            char* end = nullptr;
-            const double value = std::strtod(field.c_str(), &end);
-            if (field.empty() || end != field.c_str() + field.size()) {
-                error = "line " + std::to_string(number) + " holds '" + field + "', not a number";
-                return false;
-            }
-            row.push_back(value);
-        }
-        table.rows.push_back(std::move(row));
-    }
-    return true;
-}
-
-// The column names of a header line, for the report.
-std::vector<std::string> columnNames(const std::string& header) {
-    std::vector<std::string> names;
-    std::istringstream fields(header);
-    std::string name;
-    while (std::getline(fields, name, ','))
-        names.push_back(name);
-    return names;
-}
-
 // Largest |value| of each column of the golden table (zero for an all-zero column).
-std::vector<double> columnScales(const Table& golden, std::size_t columns) {
+std::vector<double> columnScales(const TimeSeriesTable& golden, std::size_t columns) {
     std::vector<double> scale(columns, 0.0);
     for (const auto& row : golden.rows)
         for (std::size_t c = 0; c < row.size() && c < columns; ++c)
@@ -77,10 +40,10 @@ std::vector<double> columnScales(const Table& golden, std::size_t columns) {
 }
 
 // Prints the largest difference between two tables of the same shape; false if the shapes differ.
-bool reportLargestDifference(const Table& golden, const Table& actual) {
-    if (golden.header != actual.header) {
-        std::cerr << "the columns differ:\n  golden: " << golden.header
-                  << "\n  actual: " << actual.header << "\n";
+bool reportLargestDifference(const TimeSeriesTable& golden, const TimeSeriesTable& actual) {
+    if (golden.columns != actual.columns) {
+        std::cerr << "the columns differ (" << golden.columns.size() << " in the golden file, "
+                  << actual.columns.size() << " in the run)\n";
         return false;
     }
     if (golden.rows.size() != actual.rows.size()) {
@@ -88,7 +51,7 @@ bool reportLargestDifference(const Table& golden, const Table& actual) {
                   << "\n";
         return false;
     }
-    const std::vector<std::string> names = columnNames(golden.header);
+    const std::vector<std::string>& names = golden.columns;
     const std::vector<double> scale = columnScales(golden, names.size());
     double worst = -1.0;
     std::size_t worstRow = 0, worstColumn = 0;
@@ -101,6 +64,7 @@ bool reportLargestDifference(const Table& golden, const Table& actual) {
             return false;
         }
         for (std::size_t c = 0; c < names.size(); ++c) {
+            if (std::isnan(a[c]) && std::isnan(g[c])) continue; // both cells empty
             const double difference = std::abs(a[c] - g[c]);
             const double relative =
                 scale[c] > 0.0 ? difference / scale[c] : (difference > 0.0 ? INFINITY : 0.0);
@@ -138,12 +102,12 @@ int main(int argc, char** argv) {
         std::cout << "identical bytes (" << goldenBytes.size() << ")\n";
         return 0;
     }
-    Table golden, actual;
-    std::string error;
-    if (!parseTable(goldenBytes, golden, error) || !parseTable(actualBytes, actual, error)) {
-        std::cerr << "the files differ, and one is not a time series: " << error << "\n";
+    try {
+        reportLargestDifference(lbdem::io::readTimeSeries(argv[1]),
+                                lbdem::io::readTimeSeries(argv[2]));
+    } catch (const std::exception& error) {
+        std::cerr << "the files differ, and one is not a time series: " << error.what() << "\n";
         return 2;
     }
-    reportLargestDifference(golden, actual);
     return 1;
 }

@@ -244,15 +244,14 @@ namespace {
 
 constexpr int kFolders = 3;
 
-/// A short dry run of the default case with grains.seed = seed, into dir.
-QStringList shortRun(const QString& dir, int seed, const QString& untilTc) {
+/// A dry run of the default case's 150-grain column into dir, without VTK output; the callers add
+/// its end, output interval and any other key.
+QStringList smallDryRun(const QString& dir) {
     return {"run",
             LBDEM_SOURCE_DIR "/sample_cases/default.toml",
             "--out",
             dir,
             "--quiet",
-            "--until-tc",
-            untilTc,
             "--set",
             "grains.count=150",
             "--set",
@@ -260,13 +259,16 @@ QStringList shortRun(const QString& dir, int seed, const QString& untilTc) {
             "--set",
             "fluid.enabled=false",
             "--set",
-            "output.vtk=false",
-            "--set",
-            "run.end_tc=0.5",
-            "--set",
-            "run.output_interval_tc=0.05",
-            "--set",
-            QString("grains.seed=%1").arg(seed)};
+            "output.vtk=false"};
+}
+
+/// A short dry run of the default case with grains.seed = seed, into dir.
+QStringList shortRun(const QString& dir, int seed, const QString& untilTc) {
+    return smallDryRun(dir) << "--until-tc" << untilTc << "--set"
+                            << "run.end_tc=0.5"
+                            << "--set"
+                            << "run.output_interval_tc=0.05"
+                            << "--set" << QString("grains.seed=%1").arg(seed);
 }
 
 /// Every file under dir with its bytes.
@@ -436,23 +438,10 @@ void FuzzCasesTest::nonRegularFilesRefused() {
 void FuzzCasesTest::signalsAtRandomMoments() {
     std::mt19937 random(kSeed + 4);
     const auto runArguments = [](const QString& out) {
-        return QStringList{"run",
-                           LBDEM_SOURCE_DIR "/sample_cases/default.toml",
-                           "--out",
-                           out,
-                           "--quiet",
-                           "--set",
-                           "grains.count=150",
-                           "--set",
-                           "grains.packing=0.79",
-                           "--set",
-                           "fluid.enabled=false",
-                           "--set",
-                           "run.end_tc=0.3",
-                           "--set",
-                           "run.output_interval_tc=0.02",
-                           "--set",
-                           "output.vtk=false"};
+        return smallDryRun(out) << "--set"
+                                << "run.end_tc=0.3"
+                                << "--set"
+                                << "run.output_interval_tc=0.02";
     };
     const QString reference = m_dir.filePath("signal_reference");
     QCOMPARE(runLbdem(runArguments(reference), 300000).code, 0);
