@@ -6,6 +6,7 @@
 #include "ui/studio/CaseFiles.h"
 #include "ui/studio/LivePlots.h"
 #include "ui/studio/LiveView.h"
+#include "ui/studio/RunStatusBar.h"
 #include "ui/studio/SimulationController.h"
 #include "ui/studio/WindowGrab.h"
 #include "ui/vis/OffscreenRenderer.h"
@@ -15,6 +16,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
@@ -25,6 +27,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 using lbdem::solver::SnapshotPtr;
@@ -223,6 +227,88 @@ private slots:
         QCOMPARE(afterFrame.second, zoomed.second);
         view.resetCamera();
         QVERIFY(std::abs(offCentre().first - corner.first) < 1e-9);
+    }
+
+    // The probe label stays on screen through an edit, its undoing, Reset and an ensemble load;
+    // the pending-edits mark follows whether the editor differs from the case built.
+    void probeStaysVisible() {
+        MainWindow window;
+        window.resize(1280, 800);
+        const lbdem::solver::CaseSpec spec = lbdem::studio::test::smallCase();
+        window.setCase(spec, "small");
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(waitForShownStep(window, 0, 30000));
+        QTest::qWait(100);
+        const QLabel* probe = window.runStatus().probeLabel();
+        QWidget* gl = window.liveView().renderWidget();
+        auto hover = [&] {
+            QMouseEvent move(QEvent::MouseMove, QPoint(gl->width() / 2, gl->height() / 2),
+                             Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+            QApplication::sendEvent(gl, &move);
+            QApplication::processEvents();
+            return probe->isVisible() && probe->text().contains("fluid u");
+        };
+        QVERIFY(hover());
+        auto& editor = window.caseEditor();
+        auto& status = window.runStatus();
+
+        QVERIFY(editor.setFieldText("grains.count", "151"));
+        QVERIFY(window.caseChangedSinceLoad());
+        QVERIFY(status.pendingEditsShown());
+        QVERIFY(hover());
+        QVERIFY(editor.setFieldText("grains.count", "150")); // undone by hand: nothing pending
+        QVERIFY(!window.caseChangedSinceLoad());
+        QVERIFY(!status.pendingEditsShown());
+        QVERIFY(hover());
+        QVERIFY(editor.setFieldText("grains.count", "abc")); // invalid: pending, probe still there
+        QVERIFY(status.pendingEditsShown());
+        QVERIFY(hover());
+        QVERIFY(editor.setFieldText("grains.count", "151"));
+        window.resetAction()->trigger();
+        QVERIFY(!window.caseChangedSinceLoad());
+        QVERIFY(!status.pendingEditsShown());
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller().state() == RunState::Ready, 30000);
+        QVERIFY(waitForShownStep(window, 0, 30000));
+        QVERIFY(hover());
+
+        namespace fs = std::filesystem;
+        const fs::path sweep = fs::path(LBDEM_BINARY_DIR) / "Testing/Temporary/studio_ensemble";
+        fs::remove_all(sweep);
+        for (int seed = 1; seed <= 2; ++seed) {
+            const fs::path run = sweep / (spec.name + "_s" + std::to_string(seed));
+            fs::create_directories(run);
+            std::ofstream(run / "summary.json") << "{\"finished\": true}\n";
+            std::ofstream(run / "timeseries.csv")
+                << "t_s,t_over_tc,runout_normalised\n0,0,0\n0.1,1," << seed << "\n";
+        }
+        QCOMPARE(window.setEnsembleFolder(QString::fromStdString(sweep.string())), 2);
+        QVERIFY2(status.notice().contains("ensemble band"), qPrintable(status.notice()));
+        QVERIFY(hover());
+        QCOMPARE(window.setEnsembleFolder(QString::fromStdString((sweep / "none").string())), 0);
+        QVERIFY(hover());
+        window.setEnsembleFolder(QString());
+    }
+
+    // The status line names the end time, the share done, the threads and (once known) the ETA.
+    void statusLineShowsTheEndThreadsAndEta() {
+        lbdem::studio::RunStatusBar status;
+        lbdem::studio::RunProgress progress;
+        progress.step = 120;
+        progress.time_over_tc = 0.5;
+        progress.end_time_over_tc = 2.0;
+        progress.steps_per_second = 80;
+        progress.threads = 3;
+        status.setProgress(progress);
+        QString line = status.summary();
+        QVERIFY2(line.contains("t/\u03c4c 0.500 of 2.000 (25 %)"), qPrintable(line));
+        QVERIFY2(line.contains("3 threads"), qPrintable(line));
+        QVERIFY2(!line.contains("ETA"), qPrintable(line));
+        progress.eta_seconds = 65;
+        status.setProgress(progress);
+        line = status.summary();
+        QVERIFY2(line.contains("ETA 1 min 05 s"), qPrintable(line));
+        QCOMPARE(lbdem::studio::RunStatusBar::formatDuration(7500), QString("2 h 05 min"));
     }
 
     void eventLoopStaysResponsiveDuringARun() {

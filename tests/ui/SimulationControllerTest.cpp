@@ -8,6 +8,10 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 using lbdem::solver::SnapshotPtr;
 using lbdem::studio::RunProgress;
 using lbdem::studio::RunState;
@@ -131,6 +135,61 @@ private slots:
         QVERIFY(completed.wait(30000));
         QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Finished, 5000);
         QVERIFY(completed.last().at(0).toLongLong() < 1000000);
+    }
+
+    // The solver thread's OpenMP team is the case's run.threads, whatever the GUI thread's
+    // default is; 0 means all cores but one, at least one.
+    void runThreadsSizeTheSolverTeam_data() {
+        QTest::addColumn<int>("requested");
+        QTest::newRow("1") << 1;
+        QTest::newRow("3") << 3;
+        QTest::newRow("default") << 0;
+    }
+    void runThreadsSizeTheSolverTeam() {
+#ifndef _OPENMP
+        QSKIP("built without OpenMP");
+#else
+        QFETCH(int, requested);
+        const int expected = requested > 0 ? requested : std::max(1, omp_get_num_procs() - 1);
+        QCOMPARE(lbdem::studio::SimulationWorker::teamSizeFor(requested), expected);
+        const int guiThreads = omp_get_max_threads();
+        SimulationController controller;
+        releaseEach(controller);
+        QSignalSpy progress(&controller, &SimulationController::progressed);
+        controller.load(
+            lbdem::studio::test::smallCase({"run.threads=" + std::to_string(requested)}));
+        QVERIFY(progress.wait(20000));
+        QCOMPARE(progress.last().at(0).value<RunProgress>().threads, expected);
+        controller.run(5);
+        QTRY_VERIFY_WITH_TIMEOUT(controller.state() == RunState::Paused, 20000);
+        QCOMPARE(progress.last().at(0).value<RunProgress>().threads, expected);
+        QCOMPARE(omp_get_max_threads(), guiThreads); // the GUI thread's own count is untouched
+#endif
+    }
+
+    // Progress carries the end time, and an ETA only once a run has gone on for a while.
+    void progressShowsTheEndAndALateEta() {
+        SimulationController controller;
+        releaseEach(controller);
+        QSignalSpy progress(&controller, &SimulationController::progressed);
+        QSignalSpy loaded(&controller, &SimulationController::loaded);
+        controller.load(lbdem::studio::test::smallCase({"run.end_tc=5"}));
+        QVERIFY(progress.wait(20000));
+        const auto first = progress.last().at(0).value<RunProgress>();
+        QCOMPARE(first.end_time_over_tc, 5.0);
+        QVERIFY(first.eta_seconds < 0);
+        controller.run();
+        QTRY_VERIFY_WITH_TIMEOUT(progress.last().at(0).value<RunProgress>().eta_seconds > 0, 20000);
+        const auto late = progress.last().at(0).value<RunProgress>();
+        QVERIFY(late.step >= lbdem::studio::SimulationWorker::kEtaMinSteps);
+        for (const auto& arguments : progress) {
+            const auto report = arguments.at(0).value<RunProgress>();
+            if (report.eta_seconds >= 0)
+                QVERIFY(report.step >= lbdem::studio::SimulationWorker::kEtaMinSteps);
+        }
+        controller.pause();
+        QTRY_COMPARE_WITH_TIMEOUT(controller.state(), RunState::Paused, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(progress.last().at(0).value<RunProgress>().eta_seconds < 0, 5000);
     }
 
     void badCaseReportsFailure() {

@@ -5,6 +5,7 @@
 #include "solver/io/CaseLoader.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/RunLock.h"
+#include "solver/scene/CaseSchema.h"
 #include "ui/studio/CaseEditor.h"
 #include "ui/studio/CaseFiles.h"
 #include "ui/studio/LivePlots.h"
@@ -28,7 +29,23 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace lbdem::studio {
+
+namespace {
+
+/// True when every declared key has the same value in a and b (what the editor can change).
+bool sameKeys(const solver::CaseSpec& a, const solver::CaseSpec& b) {
+    const auto& params = solver::CaseSchema::instance().params();
+    return std::all_of(params.begin(), params.end(),
+                       [&](const solver::ParamDecl& decl) { return decl.get(a) == decl.get(b); });
+}
+
+/// How long a notice of the ensemble band stays beside the probe.
+constexpr int kEnsembleNoticeMs = 10000;
+
+} // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_controller(new SimulationController(this)), m_editor(new CaseEditor),
@@ -65,7 +82,10 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_view, &LiveView::colorRangesShown, m_controls, &ViewControls::showColorRanges);
     connect(m_view, &LiveView::probed, m_status, &RunStatusBar::setProbe);
     connect(m_editor, &CaseEditor::caseEdited, this, [this] {
-        m_caseChangedSinceLoad = true;
+        // Compared with the case built, so that an edit undone by hand is no edit.
+        const auto& built = m_controller->loadedCase();
+        setCaseChangedSinceLoad(!m_editor->isValid() || !built ||
+                                !sameKeys(m_editor->currentCase(), *built));
         updateActions();
     });
     restoreSettings();
@@ -170,7 +190,7 @@ void MainWindow::connectController() {
     });
     connect(m_controller, &SimulationController::failed, this, [this](const QString& message) {
         m_status->addWarning(message);
-        m_status->showMessage(message);
+        m_status->showNotice(message);
     });
 }
 
@@ -212,22 +232,29 @@ void MainWindow::setCase(const solver::CaseSpec& spec, const QString& source) {
     m_caseName = spec.name;
     showEnsembleBand();
     m_controller->load(spec);
-    m_caseChangedSinceLoad = false;
+    setCaseChangedSinceLoad(false);
     updateActions();
 }
 
 void MainWindow::startRun() {
     if (!m_editor->isValid()) return;
-    if (m_controller->state() == RunState::Empty || m_controller->state() == RunState::Failed)
+    if (m_controller->state() == RunState::Empty || m_controller->state() == RunState::Failed) {
         m_controller->load(m_editor->currentCase());
+        setCaseChangedSinceLoad(false);
+    }
     m_controller->run();
 }
 
 void MainWindow::resetRun() {
     if (!m_editor->isValid()) return;
     m_controller->load(m_editor->currentCase());
-    m_caseChangedSinceLoad = false;
+    setCaseChangedSinceLoad(false);
     updateActions();
+}
+
+void MainWindow::setCaseChangedSinceLoad(bool changed) {
+    m_caseChangedSinceLoad = changed;
+    m_status->setPendingEdits(changed);
 }
 
 void MainWindow::updateActions() {
@@ -239,8 +266,6 @@ void MainWindow::updateActions() {
     m_step->setEnabled(!running && (state == RunState::Ready || state == RunState::Paused));
     m_reset->setEnabled(valid);
     m_save->setEnabled(valid);
-    if (m_caseChangedSinceLoad && state != RunState::Empty)
-        m_status->showMessage(tr("Edits apply on Reset (Ctrl+R)."));
 }
 
 void MainWindow::rebuildRecentMenu() {
@@ -334,11 +359,12 @@ int MainWindow::showEnsembleBand() {
     }
     const int runs = m_plots->showEnsemble(m_ensembleFolder.toStdString(), m_caseName);
     const QString name = QString::fromStdString(m_caseName);
-    m_status->showMessage(runs > 0
-                              ? tr("ensemble band: %1 finished runs of %2 in %3")
-                                    .arg(runs)
-                                    .arg(name, m_ensembleFolder)
-                              : tr("no finished ensemble of %1 in %2").arg(name, m_ensembleFolder));
+    m_status->showNotice(runs > 0
+                             ? tr("ensemble band: %1 finished runs of %2 in %3")
+                                   .arg(runs)
+                                   .arg(name, m_ensembleFolder)
+                             : tr("no finished ensemble of %1 in %2").arg(name, m_ensembleFolder),
+                         kEnsembleNoticeMs);
     return runs;
 }
 

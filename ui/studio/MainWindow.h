@@ -60,6 +60,8 @@ public:
     QAction* resetAction() const { return m_reset; }
     /// The snapshot on screen (null before the first).
     const solver::SnapshotPtr& shownSnapshot() const { return m_shown; }
+    /// True while the editor holds edits that the case last built does not have.
+    bool caseChangedSinceLoad() const { return m_caseChangedSinceLoad; }
 
 signals:
     /// snapshot was drawn in the view and added to the plots.
@@ -77,6 +79,7 @@ private:
     void startRun();
     void resetRun();
     void updateActions();
+    void setCaseChangedSinceLoad(bool changed);
     void rebuildRecentMenu();
     void openDialog();
     void saveDialog();
@@ -106,7 +109,7 @@ private:
     QString m_casePath;
     std::string m_caseName;
     QString m_ensembleFolder;
-    bool m_caseChangedSinceLoad = false;
+    bool m_caseChangedSinceLoad = false; ///< the editor differs from the case last built
 };
 
 } // namespace lbdem::studio

@@ -2,6 +2,10 @@
 #include "ui/studio/RunStatusBar.h"
 
 #include <QLabel>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
 
 namespace lbdem::studio {
 
@@ -12,11 +16,24 @@ RunStatusBar::RunStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_speed = new QLabel;
     m_numbers = new QLabel;
     m_warnings = new QLabel;
+    m_notice = new QLabel;
+    m_pending = new QLabel(tr("edits pending: Reset (Ctrl+R) applies them"));
+    m_noticeTimer = new QTimer(this);
+    m_noticeTimer->setSingleShot(true);
+    connect(m_noticeTimer, &QTimer::timeout, this, [this] { showNotice(QString()); });
+    m_probe->setObjectName("probe");
+    m_notice->setObjectName("notice");
+    m_pending->setObjectName("pendingEdits");
     m_warnings->setStyleSheet("color: #9a5b00;");
-    // A long probe line is cut, rather than widening the window as the mouse moves.
+    m_pending->setStyleSheet("color: #9a5b00;");
+    m_pending->setVisible(false);
+    m_notice->setVisible(false);
+    // A long probe line or notice is cut, rather than widening the window as the mouse moves.
     m_probe->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    addWidget(m_probe, 1);
-    for (QLabel* label : {m_state, m_time, m_speed, m_numbers, m_warnings})
+    m_notice->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    addWidget(m_probe, 2);
+    addWidget(m_notice, 1);
+    for (QLabel* label : {m_pending, m_state, m_time, m_speed, m_numbers, m_warnings})
         addPermanentWidget(label);
     setState(RunState::Empty);
 }
@@ -34,17 +51,34 @@ void RunStatusBar::setPlan(const solver::Plan& plan) {
     showWarnings();
     m_time->setText(tr("t/\u03c4c 0.000"));
     m_speed->clear();
+    if (!m_noticeTimer->isActive()) showNotice(QString());
 }
 
 void RunStatusBar::setProgress(const RunProgress& progress) {
-    m_time->setText(
-        tr("step %1, t/\u03c4c %2").arg(progress.step).arg(progress.time_over_tc, 0, 'f', 3));
+    QString time =
+        tr("step %1, t/\u03c4c %2").arg(progress.step).arg(progress.time_over_tc, 0, 'f', 3);
+    if (progress.end_time_over_tc > 0)
+        time += tr(" of %1 (%2 %)")
+                    .arg(progress.end_time_over_tc, 0, 'f', 3)
+                    .arg(std::min(100.0, 100.0 * progress.time_over_tc / progress.end_time_over_tc),
+                         0, 'f', 0);
+    m_time->setText(time);
+    QStringList speed;
     if (progress.steps_per_second > 0)
-        m_speed->setText(tr("%1 steps/s, %2 MLUPS")
-                             .arg(progress.steps_per_second, 0, 'f', 1)
-                             .arg(progress.mlups, 0, 'f', 2));
-    else
-        m_speed->clear();
+        speed << tr("%1 steps/s, %2 MLUPS")
+                     .arg(progress.steps_per_second, 0, 'f', 1)
+                     .arg(progress.mlups, 0, 'f', 2);
+    if (progress.threads > 0)
+        speed << (progress.threads == 1 ? tr("1 thread") : tr("%1 threads").arg(progress.threads));
+    if (progress.eta_seconds >= 0) speed << tr("ETA %1").arg(formatDuration(progress.eta_seconds));
+    m_speed->setText(speed.join(", "));
+}
+
+QString RunStatusBar::formatDuration(double seconds) {
+    const long long total = std::llround(seconds);
+    if (total < 60) return tr("%1 s").arg(total);
+    if (total < 3600) return tr("%1 min %2 s").arg(total / 60).arg(total % 60, 2, 10, QChar('0'));
+    return tr("%1 h %2 min").arg(total / 3600).arg(total / 60 % 60, 2, 10, QChar('0'));
 }
 
 void RunStatusBar::setState(RunState state) {
@@ -58,6 +92,26 @@ void RunStatusBar::addWarning(const QString& warning) {
 
 void RunStatusBar::setProbe(const QString& text) {
     m_probe->setText(text);
+}
+
+void RunStatusBar::setPendingEdits(bool pending) {
+    m_pending->setVisible(pending);
+}
+
+void RunStatusBar::showNotice(const QString& text, int timeoutMs) {
+    m_noticeTimer->stop();
+    m_notice->setText(text);
+    m_notice->setToolTip(text);
+    m_notice->setVisible(!text.isEmpty());
+    if (!text.isEmpty() && timeoutMs > 0) m_noticeTimer->start(timeoutMs);
+}
+
+QString RunStatusBar::notice() const {
+    return m_notice->text();
+}
+
+bool RunStatusBar::pendingEditsShown() const {
+    return !m_pending->isHidden();
 }
 
 QString RunStatusBar::summary() const {

@@ -8,7 +8,12 @@
 #include <QMetaObject>
 #include <QThread>
 
+#include <algorithm>
 #include <exception>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace lbdem::studio {
 
@@ -20,13 +25,26 @@ SimulationWorker::SimulationWorker(QObject* parent) : QObject(parent) {
 // Out of line: Simulation is only forward-declared in the header.
 SimulationWorker::~SimulationWorker() = default;
 
+int SimulationWorker::teamSizeFor(int requested) {
+    if (requested > 0) return requested;
+#ifdef _OPENMP
+    return std::max(1, omp_get_num_procs() - 1);
+#else
+    return 1;
+#endif
+}
+
 void SimulationWorker::load(const solver::CaseSpec& spec) {
     m_simulation.reset();
     m_stepsLeft = 0;
     try {
+        // Before building: packing and lattice set-up run parallel loops too.
+        applyThreads(spec.run.threads);
         const solver::Plan plan = solver::makePlan(spec);
         m_simulation = std::make_unique<solver::Simulation>(spec, plan);
         m_nodesPerStep = plan.has_fluid ? double(plan.nx) * double(plan.ny) : 0.0;
+        m_endTc = plan.tc_s > 0 ? plan.end_time_s / plan.tc_s : plan.end_time_s;
+        m_sinceRunStart.invalidate();
         emit loaded(plan);
     } catch (const std::exception& error) {
         m_simulation.reset();
@@ -49,8 +67,12 @@ void SimulationWorker::run(long long steps) {
     }
     m_stepsLeft = steps;
     if (m_state != RunState::Running) {
+        applyThreads(m_simulation->spec().run.threads);
         m_stepAtProgress = m_simulation->stepIndex();
         m_sinceProgress.restart();
+        m_stepAtRunStart = m_stepAtProgress;
+        m_tcAtRunStart = m_simulation->timeOverTc();
+        m_sinceRunStart.start();
     }
     setState(RunState::Running);
     queueBatch();
@@ -128,6 +150,9 @@ bool SimulationWorker::advance() {
 
 void SimulationWorker::stopRunning(RunState next) {
     m_stepsLeft = 0;
+    // No ETA once stopped, and the pace of a later run is measured afresh (a pause must not
+    // count as running time).
+    m_sinceRunStart.invalidate();
     reportProgress(true);
     setState(next);
     m_dirty = true;
@@ -160,6 +185,9 @@ void SimulationWorker::reportProgress(bool force) {
     RunProgress progress;
     progress.step = m_simulation->stepIndex();
     progress.time_over_tc = m_simulation->timeOverTc();
+    progress.end_time_over_tc = m_endTc;
+    progress.threads = m_threads;
+    progress.eta_seconds = etaSeconds(progress.time_over_tc, progress.step);
     if (elapsedMs > 0 && progress.step > m_stepAtProgress) {
         const double seconds = elapsedMs / 1000.0;
         progress.steps_per_second = double(progress.step - m_stepAtProgress) / seconds;
@@ -168,6 +196,31 @@ void SimulationWorker::reportProgress(bool force) {
     m_stepAtProgress = progress.step;
     m_sinceProgress.restart();
     emit progressed(progress);
+}
+
+void SimulationWorker::applyThreads(int requested) {
+#ifdef _OPENMP
+    omp_set_num_threads(teamSizeFor(requested));
+    // Measured in a region rather than read back, so that it is the team the kernels get.
+    int team = 0;
+#pragma omp parallel
+    {
+#pragma omp single
+        team = omp_get_num_threads();
+    }
+    m_threads = team;
+#else
+    (void)requested;
+    m_threads = 1;
+#endif
+}
+
+double SimulationWorker::etaSeconds(double timeOverTc, long long step) const {
+    if (!m_sinceRunStart.isValid()) return -1;
+    const qint64 elapsedMs = m_sinceRunStart.elapsed();
+    const double advanced = timeOverTc - m_tcAtRunStart;
+    if (step - m_stepAtRunStart < kEtaMinSteps || elapsedMs < kEtaMinMs || advanced <= 0) return -1;
+    return std::max(0.0, m_endTc - timeOverTc) * (elapsedMs / 1000.0) / advanced;
 }
 
 void SimulationWorker::setState(RunState state) {

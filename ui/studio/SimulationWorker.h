@@ -20,12 +20,22 @@ namespace lbdem::studio {
 /// between batches, so pause, step and reset need no lock. A batch steps for about kBatchMs and
 /// then re-queues itself. A snapshot is published at most every kFrameIntervalMs and only after the
 /// GUI released the previous one (releaseFrame): frames are skipped, never queued.
+/// The case's run.threads is applied on this thread (OpenMP's thread count is per thread, so
+/// the lattice's team is sized here, not by the GUI thread).
 class SimulationWorker : public QObject {
     Q_OBJECT
 public:
     static constexpr int kBatchMs = 15;         ///< stepping time between two looks at the queue
     static constexpr int kFrameIntervalMs = 33; ///< at most ~30 snapshots a second
     static constexpr int kProgressIntervalMs = 250; ///< status figures four times a second
+    /// An ETA needs this many steps and this much wall time since the run (re)started: the
+    /// first steps include warm-up and would give a wild estimate.
+    static constexpr int kEtaMinSteps = 10;
+    static constexpr int kEtaMinMs = 1000;
+
+    /// The OpenMP team size for a case asking for `requested` threads: that many, or for 0 all
+    /// cores but one (so that the window stays fluid), at least 1.
+    static int teamSizeFor(int requested);
 
     explicit SimulationWorker(QObject* parent = nullptr);
     ~SimulationWorker() override;
@@ -66,6 +76,8 @@ private:
     void publish();
     void reportProgress(bool force);
     void setState(RunState state);
+    void applyThreads(int requested);
+    double etaSeconds(double timeOverTc, long long step) const;
 
     std::unique_ptr<solver::Simulation> m_simulation;
     RunState m_state = RunState::Empty;
@@ -75,6 +87,11 @@ private:
     bool m_dirty = false;         ///< the state changed since the last published snapshot
     double m_nodesPerStep = 0;    ///< lattice nodes updated per step, for MLUPS
     long long m_stepAtProgress = 0;
+    int m_threads = 0;         ///< team size measured on this thread when the run last started
+    double m_endTc = 0;        ///< t / tau_c at the end of the case
+    double m_tcAtRunStart = 0; ///< t / tau_c and step when the current run started
+    long long m_stepAtRunStart = 0;
+    QElapsedTimer m_sinceRunStart;
     QElapsedTimer m_sincePublish;
     QElapsedTimer m_sinceProgress;
 };

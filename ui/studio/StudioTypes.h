@@ -15,8 +15,11 @@ enum class RunState { Empty, Ready, Running, Paused, Finished, Failed };
 struct RunProgress {
     long long step = 0;          ///< steps taken since the start
     double time_over_tc = 0;     ///< t / tau_c
+    double end_time_over_tc = 0; ///< t / tau_c at which the case ends
     double steps_per_second = 0; ///< over the last reporting interval
     double mlups = 0;            ///< million lattice-node updates per second (0 when dry)
+    double eta_seconds = -1;     ///< wall time left at the current pace; < 0 while unknown
+    int threads = 0;             ///< OpenMP team size of the solver thread (0: not measured)
 };
 
 /// Register the types above and the snapshot pointer for queued connections; call once
