@@ -1,5 +1,5 @@
-// Runout of the main mass, energies, outline, packing and the Froude number of the flowing front
-// layer.
+// Runout of the main mass, energies, packing (under the column-wise surface) and the Froude number
+// of the flowing front layer.
 #include "solver/diagnostics/MassDiagnostics.h"
 #include "solver/core/Constants.h"
 
@@ -107,14 +107,10 @@ MassDiagnostics computeMassDiagnostics(const GrainArrays& g, const MassDiagnosti
 
     const std::vector<double> top = surfaceHeights(g, main, p.bin_width_m, d.front_x_m);
     double areaUnder = 0;
-    d.outline.emplace_back(0.0, 0.0);
     for (std::size_t c = 0; c < top.size(); ++c) {
         const double left = c * p.bin_width_m, right = std::min(d.front_x_m, left + p.bin_width_m);
         areaUnder += top[c] * std::max(0.0, right - left);
-        d.outline.emplace_back(left, top[c]);
-        d.outline.emplace_back(right, top[c]);
     }
-    d.outline.emplace_back(d.front_x_m, 0.0);
     d.packing_fraction = areaUnder > 0 ? grainArea / areaUnder : 0;
 
     frontLayer(g, main, p, d);

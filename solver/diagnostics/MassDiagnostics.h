@@ -1,5 +1,5 @@
 // Diagnostics of the granular mass (the paper's definitions): runout, energies, packing, Froude
-// number, outline.
+// number (the drawn outline is MassOutline.h).
 #pragma once
 
 #include "solver/core/Real.h"
@@ -46,14 +46,13 @@ struct MassDiagnostics {
     double height_m = 0;           ///< highest point of the main mass above the base
     double kinetic_energy_j_m = 0; ///< translation + rotation, all grains [J/m]
     double ke_over_ep0 = 0;        ///< E_k / E_p0
-    double packing_fraction = 0;   ///< grain area / area under the outline (main mass)
+    double packing_fraction = 0;   ///< grain area / area under the column-wise top (main mass)
     double froude_densimetric = 0; ///< U / sqrt((rho_m / rho_w - 1) g H cos theta); 0 when dry
     double front_velocity_m_s = 0; ///< U: mean downslope velocity of the flowing front layer
     double front_thickness_m = 0;  ///< H: mean thickness of the flowing front layer
     double front_packing_fraction =
         0; ///< grain area fraction of the flowing front layer (sets rho_m)
-    std::size_t main_mass_grains = 0;               ///< discs of the main mass
-    std::vector<std::pair<double, double>> outline; ///< base -> upper surface -> front -> base
+    std::size_t main_mass_grains = 0; ///< discs of the main mass
 };
 
 /// Potential energy sum m g h of all discs, h the height of the centre normal to the slope base

@@ -6,6 +6,7 @@
 #include "solver/coupling/Coupling.h"
 #include "solver/dem/DemGuard.h"
 #include "solver/diagnostics/MassDiagnostics.h"
+#include "solver/diagnostics/MassOutline.h"
 #include "solver/lattice/AbsorbingLayer.h"
 #include "solver/lattice/FluidMotion.h"
 #include "solver/lattice/StabilityGuard.h"
@@ -137,8 +138,11 @@ public:
 
     void fillSnapshot(Snapshot& snapshot, int downsample) const override {
         m_column.fillSnapshot(snapshot);
-        const auto d = computeMassDiagnostics(viewOf(m_column.system().particles()), m_params);
-        for (const auto& [x, y] : d.outline)
+        const GrainArrays grains = viewOf(m_column.system().particles());
+        MassOutlineParams outline;
+        outline.length_m = m_params.bin_width_m; // one mean diameter
+        const auto main = mainMass(grains, m_params.contact_gap_m, m_params.bridge_gap_m);
+        for (const auto& [x, y] : massOutline(grains, main, outline))
             snapshot.outline.emplace_back(float(x), float(y));
         if (m_lattice) {
             m_guard->check(*m_lattice); // no output from a diverged state
