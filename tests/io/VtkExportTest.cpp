@@ -156,7 +156,8 @@ void VtkExportTest::filesAreCompressedBinary() {
     std::ifstream in(m_vtk + "/particles_000000.vtu");
     const std::string head((std::istreambuf_iterator<char>(in)), {});
     QVERIFY(head.find("compressor=\"vtkZLibDataCompressor\"") != std::string::npos);
-    QVERIFY(head.find("format=\"binary\"") != std::string::npos);
+    QVERIFY(head.find("format=\"appended\"") != std::string::npos);
+    QVERIFY(head.find("encoding=\"raw\"") != std::string::npos);
 }
 
 void VtkExportTest::runReaderRebuildsSnapshot() {

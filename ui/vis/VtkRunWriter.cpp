@@ -1,4 +1,5 @@
-// VTK XML output of a run: binary zlib-compressed data sets, atomically renamed, plus .pvd series.
+// VTK XML output of a run: zlib-compressed raw appended data sets, atomically renamed, plus .pvd
+// series.
 #include "ui/vis/VtkRunWriter.h"
 
 #include "solver/io/SafeFile.h"
@@ -22,6 +23,10 @@ namespace lbdem::vis {
 
 namespace {
 
+/// zlib's level: on a lattice frame 9 saves about 1 % more than 5 at several times the cost, and
+/// LZ4 is faster but leaves the file a third larger.
+constexpr int kCompressionLevel = 5;
+
 /// Writes `data` with `writer` to `dir`/`name` through a temporary file and a rename; on failure
 /// (a full disk) the temporary file is removed, the frame in place (if any) stays, and one
 /// sentence says why instead of VTK's trace.
@@ -31,8 +36,12 @@ void writeDataSet(vtkXMLWriter* writer, vtkDataObject* data, const std::string& 
     const std::string temporary = path + ".tmp";
     writer->SetInputData(data);
     writer->SetFileName(temporary.c_str());
-    writer->SetDataModeToBinary();
+    // Raw appended data: inline binary is base64, a third larger than the compressed bytes.
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetHeaderTypeToUInt64(); // blocks of a large lattice may pass 4 GiB uncompressed
     writer->SetCompressorTypeToZLib();
+    writer->SetCompressionLevel(kCompressionLevel);
     const VtkErrorCatcher errors;
     errno = 0;
     const bool written =

@@ -10,10 +10,10 @@
 namespace lbdem::vis {
 
 /// particles_NNNNNN.vtu, contacts_NNNNNN.vtu, fluid_NNNNNN.vti (wet scenes) and
-/// outline_NNNNNN.vtu per snapshot, binary and zlib-compressed, and particles.pvd, contacts.pvd,
-/// fluid.pvd, outline.pvd with timestep = t [s]. Each file is written under a temporary name and
-/// renamed, and a .pvd is rewritten only after its file is complete, so a killed run leaves a
-/// valid series. Needs no display.
+/// outline_NNNNNN.vtu per snapshot, zlib-compressed raw appended data (ParaView reads it), and
+/// particles.pvd, contacts.pvd, fluid.pvd, outline.pvd with timestep = t [s]. Each file is written
+/// under a temporary name and renamed, and a .pvd is rewritten only after its file is complete, so
+/// a killed run leaves a valid series. Needs no display.
 class VtkRunWriter {
 public:
     /// Writes into `runDir`/vtk (created if needed); `resume` keeps the existing .pvd entries up
