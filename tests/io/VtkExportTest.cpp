@@ -35,7 +35,7 @@ private slots:
     void contactsReadBack();
     void fluidReadBack();
     void outlineReadBack();
-    void filesAreCompressedBinary();
+    void filesAreCompressedRawAppended();
     void runReaderRebuildsSnapshot();
     void dryRunHasNoFluidSeries();
     void resumeContinuesNumbering();
@@ -152,7 +152,7 @@ void VtkExportTest::outlineReadBack() {
     QCOMPARE(grid->GetNumberOfPoints(), static_cast<vtkIdType>(expected.outline.size()));
 }
 
-void VtkExportTest::filesAreCompressedBinary() {
+void VtkExportTest::filesAreCompressedRawAppended() {
     std::ifstream in(m_vtk + "/particles_000000.vtu");
     const std::string head((std::istreambuf_iterator<char>(in)), {});
     QVERIFY(head.find("compressor=\"vtkZLibDataCompressor\"") != std::string::npos);
