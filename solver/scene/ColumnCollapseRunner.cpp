@@ -179,6 +179,7 @@ public:
             const FarFieldRatios farField = farFieldRatios();
             m["far_field_speed_ratio"] = farField.speed;
             m["far_field_acoustic_ratio"] = farField.acoustic;
+            m["fluid_grid_noise"] = fluidGridNoise(*m_lattice, &m_coupling->solidFraction());
         }
     }
 

@@ -3,6 +3,7 @@
 #include "solver/scene/FlowScene.h"
 
 #include "solver/lattice/D2Q9.h"
+#include "solver/scene/FluidFields.h"
 #include "solver/scene/SceneMetrics.h"
 
 #include <algorithm>
@@ -36,6 +37,7 @@ std::map<std::string, double> FlowScene::metrics() const {
     m["max_mach"] = std::sqrt(maxU2 / lattice::kCs2);
     m["mass_lattice"] = lat.totalMass();
     m["time_s"] = timeS();
+    m["fluid_grid_noise"] = fluidGridNoise(lat, nullptr);
     // Each scene's own metrics, by scene.
     using SceneMetrics = void (FlowScene::*)(std::map<std::string, double>&) const;
     static const std::map<SceneKind, SceneMetrics> kSceneMetrics = {

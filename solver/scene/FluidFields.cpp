@@ -1,9 +1,11 @@
 // Lattice-to-SI field conversion for snapshots.
 #include "solver/scene/FluidFields.h"
 
+#include "solver/diagnostics/GridNoise.h"
 #include "solver/lattice/Collision.h"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace lbdem::solver {
 
@@ -70,6 +72,30 @@ void fillFluidSnapshot(const lattice::Lattice& lat, const LatticeScales& scales,
                          dudy = (uxC - uxD) / std::max(jp - jm, 1);
             out.vorticity[k] = static_cast<float>((dvdx - dudy) / scales.dt_s);
         }
+}
+
+double fluidGridNoise(const lattice::Lattice& lat, const std::vector<Real>* solidFraction) {
+    const auto cells = static_cast<std::size_t>(lat.cells());
+    std::vector<double> ux(cells, 0.0), uy(cells, 0.0);
+    std::vector<std::uint8_t> solid(cells, 0);
+#pragma omp parallel for schedule(static)
+    for (long long c = 0; c < lat.cells(); ++c) {
+        const auto k = static_cast<std::size_t>(c);
+        if (lat.isFluid(c) && !(solidFraction && (*solidFraction)[k] > 0))
+            lat.velocity(c, ux[k], uy[k]);
+        else
+            solid[k] = 1;
+    }
+    // Ghost layers are solid nodes; a periodic side has none and wraps, a Zou-He column is the
+    // lattice's edge, beyond which the measure counts solid.
+    const GridNoiseField field{lat.nx(),
+                               lat.ny(),
+                               ux.data(),
+                               uy.data(),
+                               solid.data(),
+                               lat.setup().left.type == lattice::SideType::Periodic,
+                               lat.setup().bottom.type == lattice::SideType::Periodic};
+    return gridNoise(field).share;
 }
 
 } // namespace lbdem::solver

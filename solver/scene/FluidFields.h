@@ -27,4 +27,9 @@ struct LatticeScales {
 void fillFluidSnapshot(const lattice::Lattice& lattice, const LatticeScales& scales, int downsample,
                        const std::vector<Real>* solidFraction, SnapshotFluid& out);
 
+/// The grid-scale share of the lattice's vorticity (diagnostics/GridNoise.h) from its own
+/// velocities: solid are the nodes that are not fluid (walls, obstacles, grains under bounce-back,
+/// ghost layers) and, when solidFraction is given, every node a grain covers in part (PSM).
+double fluidGridNoise(const lattice::Lattice& lattice, const std::vector<Real>* solidFraction);
+
 } // namespace lbdem::solver

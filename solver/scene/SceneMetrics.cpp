@@ -13,7 +13,7 @@ namespace {
 using R = MetricReference;
 
 std::vector<MetricDecl> flowMetrics(const CaseSpec& spec, SceneKind kind) {
-    std::vector<MetricDecl> m{{"max_mach"}, {"mass_lattice"}, {"time_s"}};
+    std::vector<MetricDecl> m{{"fluid_grid_noise"}, {"max_mach"}, {"mass_lattice"}, {"time_s"}};
     switch (kind) {
     case SceneKind::Poiseuille:
         m.insert(m.end(), {{"l2_error", R::IsError}, {"u_max_m_s"}});
@@ -48,7 +48,9 @@ std::vector<MetricDecl> columnMetrics(const CaseSpec& spec) {
         {"packing_fraction"},  {"front_velocity_m_s"},  {"front_thickness_m"},
         {"main_mass_grains"},  {"max_grain_speed_m_s"}, {"base_normal_stress_front_pa"}};
     if (spec.fluid.enabled)
-        m.insert(m.end(), {{"froude_densimetric"}, {"pore_pressure_failure_plane_pa"}});
+        m.insert(
+            m.end(),
+            {{"froude_densimetric"}, {"pore_pressure_failure_plane_pa"}, {"fluid_grid_noise"}});
     return m;
 }
 

@@ -142,6 +142,8 @@ private slots:
         QVERIFY(viewContent > 0.2);
         QVERIFY(composedContent > 0.2);
         QVERIFY(window.livePlots().rowCount() >= 2);
+        const QString status = window.runStatus().summary();
+        QVERIFY2(status.contains("grid noise "), qPrintable(status));
 
         // The live view draws what the headless renderer draws (the render tests' baselines
         // cover that one): render the same snapshot off screen at the view's size and compare.

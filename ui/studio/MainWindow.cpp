@@ -202,6 +202,7 @@ void MainWindow::showSnapshot(const solver::SnapshotPtr& snapshot) {
     m_view->showSnapshot(snapshot);
     if (first) m_view->resetCamera();
     m_plots->addSnapshot(*snapshot);
+    m_status->setGridNoise(snapshot->metrics);
     if (m_vtkWriter) m_vtkWriter->write(*snapshot);
     // Release only after drawing: the worker sends the next frame when this one is done, and
     // not before the GUI had as much time for input as it spent drawing.

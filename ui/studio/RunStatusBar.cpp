@@ -15,6 +15,9 @@ RunStatusBar::RunStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_time = new QLabel;
     m_speed = new QLabel;
     m_numbers = new QLabel;
+    m_noise = new QLabel;
+    m_noise->setToolTip(tr("Grid-scale share of the fluid's vorticity away from solids: "
+                           "0 for a smooth flow, about 1 for node-to-node noise"));
     m_warnings = new QLabel;
     m_notice = new QLabel;
     m_pending = new QLabel(tr("edits pending: Reset (Ctrl+R) applies them"));
@@ -33,7 +36,7 @@ RunStatusBar::RunStatusBar(QWidget* parent) : QStatusBar(parent) {
     m_notice->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     addWidget(m_probe, 2);
     addWidget(m_notice, 1);
-    for (QLabel* label : {m_pending, m_state, m_time, m_speed, m_numbers, m_warnings})
+    for (QLabel* label : {m_pending, m_state, m_time, m_speed, m_numbers, m_noise, m_warnings})
         addPermanentWidget(label);
     setState(RunState::Empty);
 }
@@ -81,6 +84,14 @@ QString RunStatusBar::formatDuration(double seconds) {
     return tr("%1 h %2 min").arg(total / 3600).arg(total / 60 % 60, 2, 10, QChar('0'));
 }
 
+void RunStatusBar::setGridNoise(const std::map<std::string, double>& metrics) {
+    const auto found = metrics.find("fluid_grid_noise");
+    if (found == metrics.end() || !std::isfinite(found->second))
+        m_noise->clear();
+    else
+        m_noise->setText(tr("grid noise %1").arg(found->second, 0, 'f', 3));
+}
+
 void RunStatusBar::setState(RunState state) {
     m_state->setText(runStateName(state));
 }
@@ -116,7 +127,7 @@ bool RunStatusBar::pendingEditsShown() const {
 
 QString RunStatusBar::summary() const {
     QStringList parts;
-    for (QLabel* label : {m_state, m_time, m_speed, m_numbers, m_warnings})
+    for (QLabel* label : {m_state, m_time, m_speed, m_numbers, m_noise, m_warnings})
         if (!label->text().isEmpty()) parts << label->text();
     return parts.join(" | ");
 }

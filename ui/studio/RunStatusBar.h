@@ -1,11 +1,14 @@
 // The status line: run state, t/tau_c and its end, steps/s, MLUPS, threads, ETA, tau, Mach,
-// warnings and the probe.
+// grid noise, warnings and the probe.
 #pragma once
 
 #include "ui/studio/StudioTypes.h"
 
 #include <QStatusBar>
 #include <QStringList>
+
+#include <map>
+#include <string>
 
 class QLabel;
 class QTimer;
@@ -24,6 +27,9 @@ public:
     void setPlan(const solver::Plan& plan);
     /// Step, t/tau_c of now and of the end, steps/s, MLUPS, threads and the ETA once known.
     void setProgress(const RunProgress& progress);
+    /// The fluid's grid-scale share of vorticity (timeseries column fluid_grid_noise) of the
+    /// frame shown; cleared when the frame has none.
+    void setGridNoise(const std::map<std::string, double>& metrics);
     /// The run state word.
     void setState(RunState state);
     /// Add a warning (also shown as the tooltip of the warnings label).
@@ -53,6 +59,7 @@ private:
     QLabel* m_time;
     QLabel* m_speed;
     QLabel* m_numbers;
+    QLabel* m_noise;
     QLabel* m_warnings;
     QLabel* m_probe;
     QLabel* m_notice;
