@@ -23,6 +23,10 @@ std::vector<VerificationResult> verifyCylinder(const VerificationOptions& option
 /// `stability`: the cavity at tau - 1/2 = 1e-4 (FluidVerificationCases.cpp).
 std::vector<VerificationResult> verifyStability(const VerificationOptions& options);
 
+/// `grid-noise`: the cylinder wake at Re = 100 keeps fluid_grid_noise small
+/// (GridNoiseVerification.cpp).
+std::vector<VerificationResult> verifyGridNoise(const VerificationOptions& options);
+
 /// `restitution`: binary disc-disc and disc-wall collisions reach the target e.
 std::vector<VerificationResult> verifyRestitution(const VerificationOptions& options);
 
