@@ -22,10 +22,12 @@ struct CouplingParams {
     CouplingMethod method = CouplingMethod::BounceBack;
     Real hydro_radius_ratio = 0.9; ///< r_h / R seen by the fluid (contacts keep R)
     PsmWeight psm_weight = PsmWeight::Nt;
-    Real h = 1;                      ///< lattice spacing [m]
-    Real dt = 1;                     ///< fluid time step [s]
-    Real rho_f = 1;                  ///< fluid density [kg/m^3]
-    Real origin_x = 0, origin_y = 0; ///< SI position of the lattice's domain corner [m]
+    RefillRule refill = RefillRule::SurfaceEquilibrium; ///< bounce-back: uncovered nodes
+    bool link_mass_correction = true; ///< bounce-back: links return their mass excess (see links)
+    Real h = 1;                       ///< lattice spacing [m]
+    Real dt = 1;                      ///< fluid time step [s]
+    Real rho_f = 1;                   ///< fluid density [kg/m^3]
+    Real origin_x = 0, origin_y = 0;  ///< SI position of the lattice's domain corner [m]
 };
 
 /// Hydrodynamic force and torque on one grain.

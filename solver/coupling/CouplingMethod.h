@@ -19,6 +19,12 @@ enum class PsmWeight {
     Nt,  ///< B = eps (tau - 1/2) / ((1 - eps) + (tau - 1/2)); goes to 0 as tau -> 1/2
 };
 
+/// What a node that a bounce-back grain uncovers starts from.
+enum class RefillRule {
+    SurfaceEquilibrium, ///< equilibrium at the neighbours' mean density and the surface velocity
+    NeighbourMean,      ///< the mean of the fluid neighbours' populations (their motion and stress)
+};
+
 /// The case-file word of each method (coupling.method).
 constexpr std::array<EnumWord<CouplingMethod>, 2> enumWords(CouplingMethod) {
     return {{{CouplingMethod::BounceBack, "bounce_back"}, {CouplingMethod::Psm, "psm"}}};
@@ -27,6 +33,12 @@ constexpr std::array<EnumWord<CouplingMethod>, 2> enumWords(CouplingMethod) {
 /// The case-file word of each weight (coupling.psm_weight).
 constexpr std::array<EnumWord<PsmWeight>, 2> enumWords(PsmWeight) {
     return {{{PsmWeight::Eps, "eps"}, {PsmWeight::Nt, "nt"}}};
+}
+
+/// The case-file word of each refill rule (coupling.refill).
+constexpr std::array<EnumWord<RefillRule>, 2> enumWords(RefillRule) {
+    return {{{RefillRule::SurfaceEquilibrium, "surface_equilibrium"},
+             {RefillRule::NeighbourMean, "neighbour_mean"}}};
 }
 
 } // namespace lbdem::solver::coupling

@@ -224,16 +224,24 @@ void BounceBackCoupling::applyChanges() {
 
 void BounceBackCoupling::refillUncovered() {
     // Refill (e.g. Peng et al. 2016): equilibrium at the mean density of the fluid neighbours and
-    // the velocity of the surface that just left the node; the grain pays that momentum.
+    // the velocity of the surface that just left the node (coupling.refill = surface_equilibrium),
+    // or the mean of the neighbours' populations, which carries their motion and stress
+    // (neighbour_mean); the grain pays the new fluid's momentum either way.
+    const bool neighbourMean = m_params.refill == RefillRule::NeighbourMean;
     for (const Change& c : m_uncovered) {
         if (m_owner[c.cell] != kJustUncovered) continue;
-        Real rho = 0;
+        Real rho = 0, mean[kQ] = {};
         int count = 0;
         for (int q = 1; q < kQ; ++q) {
             const long long nb = wrapCell(c.iu + kCx[q], c.ju + kCy[q]);
             if (nb < 0 || !m_lattice.isFluid(nb) || m_owner[nb] != kNone) continue;
             rho += m_lattice.density(nb);
             ++count;
+            if (!neighbourMean) continue;
+            long long slots[kQ];
+            m_lattice.postSlots(nb, slots);
+            for (int k = 0; k < kQ; ++k)
+                mean[k] += m_lattice.population(slots[k], k);
         }
         rho = count > 0 ? rho / count : 1.0;
         Real cx, cy, r, ux, uy;
@@ -242,13 +250,27 @@ void BounceBackCoupling::refillUncovered() {
         Real dx, dy;
         offsetFromCentre(c.iu, c.ju, cx, cy, dx, dy);
         surfaceVelocity(c.grain, dx, dy, ux, uy);
-        m_loadX[c.grain] -= rho * ux;
-        m_loadY[c.grain] -= rho * uy;
-        m_loadT[c.grain] -= rho * (dx * uy - dy * ux);
+        Real f[kQ];
+        for (int q = 0; q < kQ; ++q)
+            f[q] = neighbourMean && count > 0 ? mean[q] / count : equilibrium(q, rho, ux, uy);
+        if (neighbourMean && count > 0) {
+            Real jx = 0, jy = 0;
+            for (int q = 1; q < kQ; ++q) {
+                jx += kCx[q] * f[q];
+                jy += kCy[q] * f[q];
+            }
+            m_loadX[c.grain] -= jx;
+            m_loadY[c.grain] -= jy;
+            m_loadT[c.grain] -= dx * jy - dy * jx;
+        } else {
+            m_loadX[c.grain] -= rho * ux;
+            m_loadY[c.grain] -= rho * uy;
+            m_loadT[c.grain] -= rho * (dx * uy - dy * ux);
+        }
         long long slots[kQ];
         m_lattice.postSlots(c.cell, slots);
         for (int q = 0; q < kQ; ++q)
-            m_lattice.setPopulation(slots[q], q, equilibrium(q, rho, ux, uy));
+            m_lattice.setPopulation(slots[q], q, f[q]);
         m_solid[c.cell] = 0;
     }
     for (const Change& c : m_uncovered)

@@ -170,7 +170,9 @@ template <class Pending> struct ExcessCollector {
     Pending* pending;
     std::size_t used[Pending::kRows] = {}; // on the thread's stack: written by every add
     int surfaceRow = 0;
+    bool enabled = true; // false: the links keep their excess (coupling.link_mass_correction)
     void add(long long fluid, int back, Real excess) {
+        if (!enabled) return;
         const int row = surfaceRow + kCy[back];
         const int slot = row & (Pending::kRows - 1);
         auto& list = pending->list[slot];
@@ -303,6 +305,7 @@ template <class S> std::size_t BounceBackCoupling::linkSurfaceNodesStored(S* sto
         auto& pending = m_threadPendingExcess[ompThreadIndex()];
         auto& deferredLoads = m_threadDeferredLoads[ompThreadIndex()];
         ExcessCollector<PendingExcess> massExcess{&pending};
+        massExcess.enabled = m_params.link_mass_correction;
         bool aimed = false;       // at the row kPrefetchRows beyond this thread's current row
         int firstRow = 0;         // of this thread's block
         long long blockStart = 0; // its first place in the list

@@ -81,6 +81,8 @@ void declareCoupling(SectionKeys<CouplingSpec> s) {
     s.choice("method", &CouplingSpec::method, coupling::CouplingMethod::BounceBack, "Fluid-grain coupling: interpolated moving-wall bounce-back or partially saturated cells (Noble-Torczynski).");
     s.real("hydro_radius_ratio", &CouplingSpec::hydro_radius_ratio, 0.9, "-", 0.5, 1, "Hydrodynamic radius r_h / R seen by the fluid only (the paper: 0.9).");
     s.choice("psm_weight", &CouplingSpec::psm_weight, coupling::PsmWeight::Nt, "Partially-saturated weighting: B = eps, or the Noble-Torczynski weight.");
+    s.choice("refill", &CouplingSpec::refill, coupling::RefillRule::SurfaceEquilibrium, "Bounce-back: what a node a grain uncovers starts from: the equilibrium at its fluid neighbours' mean density and the grain surface's velocity, or the mean of its fluid neighbours' populations.");
+    s.flag("link_mass_correction", &CouplingSpec::link_mass_correction, true, "Bounce-back: each interpolated link's mass beyond halfway bounce-back is taken back from its fluid node's rest population, so that pores sealed by grains keep their mass (docs/coupling-methods.md); false leaves it.");
     s.integer("substeps", &CouplingSpec::substeps, 0, "-", 0, 10000, "DEM steps per fluid step; 0 = floor(dt / dt_DEM) + 1.");
 }
 

@@ -71,6 +71,8 @@ struct CouplingSpec {
     double hydro_radius_ratio{};
     coupling::PsmWeight psm_weight{};
     int substeps{};
+    coupling::RefillRule refill{};
+    bool link_mass_correction{};
 };
 
 /// How long to run and how often to report ([run]).

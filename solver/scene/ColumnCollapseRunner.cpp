@@ -64,6 +64,8 @@ coupling::CouplingParams couplingParams(const CaseSpec& spec, const Plan& plan) 
     p.method = spec.coupling.method;
     p.psm_weight = spec.coupling.psm_weight;
     p.hydro_radius_ratio = spec.coupling.hydro_radius_ratio;
+    p.refill = spec.coupling.refill;
+    p.link_mass_correction = spec.coupling.link_mass_correction;
     p.h = plan.h_m;
     p.dt = plan.dt_s;
     p.rho_f = spec.fluid.density_kg_m3;
