@@ -34,6 +34,8 @@ public:
     /// Hand the DEM the mean of this step's and the last step's load (see the definition for
     /// why).
     void collectForces() override;
+    /// The open fluid neighbours of the last mapGrains' surface nodes, grain by grain.
+    void linkedFluidCells(std::vector<long long>& out) const override;
     /// Moving-wall links of the last mapGrains.
     std::size_t boundaryCount() const override { return m_linkCount; }
     /// Covered nodes grain by grain, tracking flag and the last step's loads.

@@ -77,6 +77,9 @@ public:
     /// Solid fraction per lattice cell (index lattice.index(i, j)): 0/1 for bounce-back, eps for
     /// PSM.
     const std::vector<Real>& solidFraction() const { return m_solid; }
+    /// Append the fluid nodes that the links of the last mapGrains write into (bounce-back; none
+    /// under PSM); a node may appear more than once.
+    virtual void linkedFluidCells(std::vector<long long>& out) const { (void)out; }
     /// Number of bounce-back links or PSM cell entries of the last mapGrains.
     virtual std::size_t boundaryCount() const = 0;
     /// The parameters the coupling was built with.

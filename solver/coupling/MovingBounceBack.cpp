@@ -254,6 +254,14 @@ struct BounceBackCoupling::EdgeAccess {
     }
 };
 
+void BounceBackCoupling::linkedFluidCells(std::vector<long long>& out) const {
+    for (const SurfaceNode* node : m_surface)
+        for (int back = 1; back < kQ; ++back) {
+            const long long fluid = wrapCell(node->iu + kCx[back], node->ju + kCy[back]);
+            if (fluid >= 0 && m_lattice.isFluid(fluid) && m_owner[fluid] < 0) out.push_back(fluid);
+        }
+}
+
 std::size_t BounceBackCoupling::linkSurfaceNodes() {
     return m_lattice.storage() == lattice::PopulationStorage::Float
                ? linkSurfaceNodesStored(m_lattice.storedFloats())

@@ -46,6 +46,7 @@ void declareFluid(SectionKeys<FluidSpec> s) {
     s.real("s_eps", &FluidSpec::s_eps, 1.54, "-", 0, 2, "MRT relaxation rate of the energy-squared moment.");
     s.real("s_q", &FluidSpec::s_q, 1.9, "-", 0, 2, "MRT relaxation rate of the energy-flux moments q.");
     s.real("magic_lambda", &FluidSpec::magic_lambda, 0.0, "-", 0, 10, "When above 0, sets s_q so that (tau - 1/2)(1/s_q - 1/2) equals it, whatever tau: 0.1875 (3/16) puts bounce-back walls half-way between nodes, which makes a packing's permeability nearly independent of the resolution (docs/paper.md); 0: s_q as given.");
+    s.flag("magic_lambda_links_only", &FluidSpec::magic_lambda_links_only, false, "Column scenes with bounce-back grains: magic_lambda's s_q only at the fluid nodes next to a wall or grain (their energy flux re-relaxed after the bulk collision), s_q elsewhere; false: magic_lambda's s_q everywhere. Near tau = 1/2 that s_q is small and leaves grid-scale noise in the open fluid (docs/studies.md, \"Grid-scale noise\").");
     s.choice("storage", &FluidSpec::storage, lattice::PopulationStorage::Double, "Number format of the stored distributions and of the bulk collision. double: 8 B per value, collided in double. float: 4 B, holding f_i - w_i (DDF shifting, Lehmann et al. 2022), collided in float on those deviations (boundary, obstacle and grain passes stay in double): half the memory and memory traffic, faster where the kernel is memory-bound, for a velocity ~1e-7 (relative) off double's.");
 }
 

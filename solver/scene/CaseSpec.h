@@ -41,6 +41,7 @@ struct FluidSpec {
     double s_eps{};
     double s_q{};
     double magic_lambda{};
+    bool magic_lambda_links_only{};
     lattice::PopulationStorage storage{};
 };
 

@@ -45,6 +45,12 @@ std::vector<CaseProblem> validateCase(const CaseSpec& spec) {
                                 "must be positive: the column settles under gravity and "
                                 "time is counted in tau_c = sqrt(H_i / g)"});
     }
+    if (spec.fluid.magic_lambda_links_only &&
+        (spec.scene != SceneKind::ColumnCollapse ||
+         spec.coupling.method != coupling::CouplingMethod::BounceBack || spec.fluid.s_q == 1.0))
+        problems.push_back({"fluid.magic_lambda_links_only",
+                            "needs a column collapse with coupling.method = \"bounce_back\" and "
+                            "fluid.s_q other than 1 (the links' nodes are re-relaxed from it)"});
     if (spec.fluid.tau != 0.0 && spec.fluid.tau <= 0.5)
         problems.push_back(
             {"fluid.tau", "must exceed 0.5 (or be 0 to derive it from target_mach)"});

@@ -8,6 +8,7 @@
 #include "solver/diagnostics/MassDiagnostics.h"
 #include "solver/diagnostics/MassOutline.h"
 #include "solver/lattice/AbsorbingLayer.h"
+#include "solver/lattice/EnergyFluxRelaxation.h"
 #include "solver/lattice/FluidMotion.h"
 #include "solver/lattice/StabilityGuard.h"
 #include "solver/scene/ColumnScene.h"
@@ -16,8 +17,10 @@
 #include "solver/scene/LatticeState.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
+#include <vector>
 
 namespace lbdem::solver {
 
@@ -102,6 +105,12 @@ public:
                 coupling::makeCoupling(*m_lattice, m_column.system(), couplingParams(spec, plan));
             m_layer.emplace(*m_lattice, absorbingLayerSetup(spec));
             m_guard.emplace(plan.h_m);
+            if (spec.fluid.magic_lambda_links_only && spec.fluid.magic_lambda > 0) {
+                const double linkSq = lattice::sqForMagicLambda(plan.tau, spec.fluid.magic_lambda);
+                m_linkFluxFactor = lattice::energyFluxFactor(spec.fluid.s_q, linkSq);
+                m_wallLinkCells = wallLinkCells(*m_lattice);
+                m_linkMark.assign(static_cast<std::size_t>(m_lattice->cells()), 0);
+            }
         }
     }
 
@@ -115,6 +124,7 @@ public:
         m_coupling->mapGrains();
         t = timer.lap(Stage::MapGrains, t);
         m_lattice->step();
+        if (m_linkFluxFactor != 0) relaxLinkNodes();
         t = timer.lap(Stage::StreamCollide, t);
         m_coupling->collectForces();
         t = timer.lap(Stage::HydrodynamicForces, t);
@@ -214,6 +224,44 @@ public:
     }
 
 private:
+    /// Fluid nodes next to a wall (a solid ghost node), where the floor's and walls' links write.
+    static std::vector<long long> wallLinkCells(const lattice::Lattice& lat) {
+        std::vector<long long> cells;
+        const std::uint8_t* flags = lat.flags();
+        for (int j = 0; j < lat.ny(); ++j)
+            for (int i = 0; i < lat.nx(); ++i) {
+                if (flags[lat.index(i, j)] != lattice::Lattice::kFluid) continue;
+                bool nearWall = false;
+                for (int q = 1; q < lattice::kQ; ++q) {
+                    const int in = (i + lattice::kCx[q] + lat.nx()) % lat.nx();
+                    const int jn = (j + lattice::kCy[q] + lat.ny()) % lat.ny();
+                    nearWall = nearWall || flags[lat.index(in, jn)] == lattice::Lattice::kSolid;
+                }
+                if (nearWall) cells.push_back(lat.index(i, j));
+            }
+        return cells;
+    }
+
+    /// fluid.magic_lambda_links_only: the nodes the links of this step write into (grains' and
+    /// walls', each once, none a grain covers) get the energy flux of magic_lambda's s_q.
+    void relaxLinkNodes() {
+        m_linkCells.clear();
+        m_coupling->linkedFluidCells(m_linkCells);
+        m_linkCells.insert(m_linkCells.end(), m_wallLinkCells.begin(), m_wallLinkCells.end());
+        const auto& solid = m_coupling->solidFraction();
+        std::size_t kept = 0;
+        for (const long long cell : m_linkCells) {
+            auto& mark = m_linkMark[static_cast<std::size_t>(cell)];
+            if (mark || solid[static_cast<std::size_t>(cell)] > 0) continue;
+            mark = 1;
+            m_linkCells[kept++] = cell;
+        }
+        m_linkCells.resize(kept);
+        lattice::rescaleEnergyFlux(*m_lattice, m_linkCells, m_linkFluxFactor);
+        for (const long long cell : m_linkCells)
+            m_linkMark[static_cast<std::size_t>(cell)] = 0;
+    }
+
     double initialPotential() const {
         return potentialEnergy(viewOf(m_column.system().particles()), m_spec.domain.gravity_m_s2);
     }
@@ -337,7 +385,11 @@ private:
     std::unique_ptr<coupling::Coupling> m_coupling;
     std::optional<lattice::StabilityGuard> m_guard;
     std::optional<lattice::AbsorbingLayer>
-        m_layer; // sponge inside the pressure sides (may hold no node)
+        m_layer;                            // sponge inside the pressure sides (may hold no node)
+    double m_linkFluxFactor = 0;            // fluid.magic_lambda_links_only (0: off)
+    std::vector<long long> m_wallLinkCells; // fluid nodes next to a wall
+    std::vector<long long> m_linkCells;     // this step's link nodes
+    std::vector<std::uint8_t> m_linkMark;   // per cell: already in m_linkCells
 };
 
 } // namespace

@@ -15,8 +15,8 @@ lattice::CollisionParams collisionOf(const CaseSpec& spec, double tau) {
     p.tau = tau;
     p.s_e = spec.fluid.s_e;
     p.s_eps = spec.fluid.s_eps;
-    p.s_q = spec.fluid.magic_lambda > 0 ? lattice::sqForMagicLambda(tau, spec.fluid.magic_lambda)
-                                        : spec.fluid.s_q;
+    const bool everywhere = spec.fluid.magic_lambda > 0 && !spec.fluid.magic_lambda_links_only;
+    p.s_q = everywhere ? lattice::sqForMagicLambda(tau, spec.fluid.magic_lambda) : spec.fluid.s_q;
     p.smagorinsky = spec.fluid.smagorinsky;
     return p;
 }

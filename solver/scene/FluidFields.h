@@ -10,7 +10,8 @@
 
 namespace lbdem::solver {
 
-/// The collision model and rates of a case's [fluid] section at relaxation time tau.
+/// The collision model and rates of a case's [fluid] section at relaxation time tau (the bulk's
+/// s_q when fluid.magic_lambda_links_only holds).
 lattice::CollisionParams collisionOf(const CaseSpec& spec, double tau);
 
 /// Scales from lattice to SI units of one lattice.
