@@ -31,7 +31,7 @@ void rasterise(ScalarGrid& grid, double cx, double cy, double r) {
 
 /// The loop clipped to x >= 0, y >= 0 (the mirror images fold onto the walls), without repeated
 /// points and with the inner points of straight runs along a wall dropped.
-Polyline clipToDomain(const Polyline& loop) {
+Polyline clipToQuadrant(const Polyline& loop) {
     Polyline clipped;
     for (auto [x, y] : loop) {
         const std::pair<double, double> point{std::max(0.0, x), std::max(0.0, y)};
@@ -82,7 +82,7 @@ Polyline massOutline(const GrainArrays& g, const std::vector<bool>& main,
     Polyline best;
     double bestArea = 0;
     for (const Polyline& loop : marchingSquares(grid, p.level)) {
-        Polyline clipped = clipToDomain(loop);
+        Polyline clipped = clipToQuadrant(loop);
         const double area = std::abs(signedArea(clipped));
         if (clipped.size() >= 3 && area > bestArea) best = std::move(clipped), bestArea = area;
     }
