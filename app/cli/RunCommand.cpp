@@ -7,6 +7,7 @@
 #include "app/cli/RunSinks.h"
 #include "campaign/RunFolder.h"
 #include "solver/core/InputError.h"
+#include "solver/core/OpenMp.h"
 #include "solver/io/CaseLoader.h"
 #include "solver/io/CaseWriter.h"
 #include "solver/io/Checkpoint.h"
@@ -18,10 +19,6 @@
 #include "solver/scene/Simulation.h"
 
 #include <CLI/CLI.hpp>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <filesystem>
 #include <iostream>
@@ -45,11 +42,7 @@ struct RunOptions {
 };
 
 void applyThreads(const solver::CaseSpec& spec) {
-#ifdef _OPENMP
-    if (spec.run.threads > 0) omp_set_num_threads(spec.run.threads);
-#else
-    (void)spec;
-#endif
+    solver::ompSetThreads(spec.run.threads);
 }
 
 void drive(solver::Simulation& simulation, const fs::path& dir, const RunOptions& options,

@@ -34,6 +34,29 @@ inline void ompSetThreads(int n) {
 #endif
 }
 
+/// Processors OpenMP may use (1 without OpenMP).
+inline int ompProcessorCount() {
+#ifdef _OPENMP
+    return omp_get_num_procs();
+#else
+    return 1;
+#endif
+}
+
+/// The size of the team a parallel region gets now: measured in one, so that a thread limit or
+/// dynamic adjustment shows (1 without OpenMP).
+inline int ompTeamSize() {
+    int team = 1;
+#ifdef _OPENMP
+#pragma omp parallel
+    {
+#pragma omp single
+        team = omp_get_num_threads();
+    }
+#endif
+    return team;
+}
+
 /// Index of the calling thread in the current parallel region (0 without OpenMP).
 inline int ompThreadIndex() {
 #ifdef _OPENMP

@@ -2,6 +2,7 @@
 #include "ui/studio/SimulationWorker.h"
 
 #include "solver/core/InputError.h"
+#include "solver/core/OpenMp.h"
 #include "solver/scene/Plan.h"
 #include "solver/scene/Simulation.h"
 
@@ -10,10 +11,6 @@
 
 #include <algorithm>
 #include <exception>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace lbdem::studio {
 
@@ -26,12 +23,7 @@ SimulationWorker::SimulationWorker(QObject* parent) : QObject(parent) {
 SimulationWorker::~SimulationWorker() = default;
 
 int SimulationWorker::teamSizeFor(int requested) {
-    if (requested > 0) return requested;
-#ifdef _OPENMP
-    return std::max(1, omp_get_num_procs() - 1);
-#else
-    return 1;
-#endif
+    return requested > 0 ? requested : std::max(1, solver::ompProcessorCount() - 1);
 }
 
 void SimulationWorker::load(const solver::CaseSpec& spec) {
@@ -199,20 +191,8 @@ void SimulationWorker::reportProgress(bool force) {
 }
 
 void SimulationWorker::applyThreads(int requested) {
-#ifdef _OPENMP
-    omp_set_num_threads(teamSizeFor(requested));
-    // Measured in a region rather than read back, so that it is the team the kernels get.
-    int team = 0;
-#pragma omp parallel
-    {
-#pragma omp single
-        team = omp_get_num_threads();
-    }
-    m_threads = team;
-#else
-    (void)requested;
-    m_threads = 1;
-#endif
+    solver::ompSetThreads(teamSizeFor(requested));
+    m_threads = solver::ompTeamSize(); // the team the kernels get
 }
 
 double SimulationWorker::etaSeconds(double timeOverTc, long long step) const {
