@@ -1,4 +1,4 @@
-// lbdem-studio: the desktop application; a thin main over lbdem::studio (docs/design.md, Style §1).
+// lbdem-studio: the desktop application; a thin main over lbdem::studio (docs/style.md, Style §1).
 #include "solver/io/CaseLoader.h"
 #include "ui/studio/LiveView.h"
 #include "ui/studio/MainWindow.h"

@@ -8,7 +8,7 @@
 
 namespace lbdem::solver {
 
-/// The stages of Simulation::step(), in execution order (docs/design.md, Style §4).
+/// The stages of Simulation::step(), in execution order (docs/style.md, Style §4).
 enum class Stage : std::size_t {
     MapGrains,
     StreamCollide,

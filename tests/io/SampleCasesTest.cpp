@@ -1,4 +1,4 @@
-// Every file in sample_cases/ parses and plans without error (docs/design.md, Style §5).
+// Every file in sample_cases/ parses and plans without error (docs/style.md, Style §5).
 #include "solver/io/CaseLoader.h"
 #include "solver/scene/Plan.h"
 

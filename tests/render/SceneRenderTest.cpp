@@ -1,4 +1,4 @@
-// Render regression: 300x300 images of a synthetic snapshot against baselines (docs/design.md,
+// Render regression: 300x300 images of a synthetic snapshot against baselines (docs/style.md,
 // Style §7).
 #include "tests/render/ImageBaseline.h"
 #include "tests/support/SyntheticSnapshot.h"

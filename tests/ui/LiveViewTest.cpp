@@ -4,7 +4,7 @@
 //
 // Regenerating the baseline (after a deliberate change to what the view draws):
 //   LBDEM_UPDATE_BASELINES=1 ctest --test-dir build/release -R lbdem.ui.live_view
-// then look at tests/baselines/studio_live_view.png before committing it (docs/design.md, Style
+// then look at tests/baselines/studio_live_view.png before committing it (docs/style.md, Style
 // §7). A failing run leaves the image and the difference in build/release/Testing/Temporary/. CTest
 // runs it with OMP_NUM_THREADS=1; LBDEM_ANY_THREADS=1 lifts that check (1, 2 and 4 threads gave
 // identical pixels when the baseline was made).

@@ -1,5 +1,5 @@
 // The solver thread: snapshots arrive, frames are skipped not queued, pause stops them, reset
-// and step work, and shutdown joins the thread (docs/design.md, Style §3, §7).
+// and step work, and shutdown joins the thread (docs/style.md, Style §3, §7).
 #include "ui/studio/SimulationController.h"
 #include "tests/ui/StudioTestCase.h"
 #include "ui/studio/SimulationWorker.h"

@@ -1,4 +1,5 @@
-// The physics core must not depend on Qt, VTK, HDF5 or TOML (docs/design.md §1 and Style §1).
+// The physics core must not depend on Qt, VTK, HDF5 or TOML (docs/design.md §1 and docs/style.md,
+// Style §1).
 #include <QDirIterator>
 #include <QFile>
 #include <QRegularExpression>

@@ -16,7 +16,7 @@ class Simulation;
 
 namespace lbdem::studio {
 
-/// Lives on the thread of a SimulationController (docs/design.md, Style §3): every slot runs there,
+/// Lives on the thread of a SimulationController (docs/style.md, Style §3): every slot runs there,
 /// between batches, so pause, step and reset need no lock. A batch steps for about kBatchMs and
 /// then re-queues itself. A snapshot is published at most every kFrameIntervalMs and only after the
 /// GUI released the previous one (releaseFrame): frames are skipped, never queued.
