@@ -40,23 +40,32 @@ double vorticity(const GridNoiseField& f, int i, int j) {
            0.5 * (f.ux[wrapped(f, i, j + 1)] - f.ux[wrapped(f, i, j - 1)]);
 }
 
+/// Whether all four neighbours of (i, j) exist (across periodic sides or inside the grid).
+bool hasNeighbours(const GridNoiseField& f, int i, int j) {
+    return wrapped(f, i + 1, j) >= 0 && wrapped(f, i - 1, j) >= 0 && wrapped(f, i, j + 1) >= 0 &&
+           wrapped(f, i, j - 1) >= 0;
+}
+
 /// Sums of one row: squared deviation from the box mean, squared vorticity, nodes.
 struct RowSums {
     double deviation2 = 0, vorticity2 = 0;
     long long nodes = 0;
 };
 
-RowSums rowSums(const GridNoiseField& f, int j) {
+/// The row's sums from the vorticity of every node (omega, row by row; 0 where undefined, which
+/// no node far from solids reads).
+RowSums rowSums(const GridNoiseField& f, const std::vector<double>& omega, int j) {
     RowSums row;
     for (int i = 0; i < f.nx; ++i) {
         if (!farFromSolids(f, i, j)) continue;
         double box = 0;
         for (int dj = -1; dj <= 1; ++dj)
             for (int di = -1; di <= 1; ++di)
-                box += vorticity(f, i + di, j + dj);
-        const double omega = vorticity(f, i, j), deviation = omega - box / 9.0;
+                box += omega[static_cast<std::size_t>(wrapped(f, i + di, j + dj))];
+        const double here = omega[static_cast<std::size_t>(wrapped(f, i, j))];
+        const double deviation = here - box / 9.0;
         row.deviation2 += deviation * deviation;
-        row.vorticity2 += omega * omega;
+        row.vorticity2 += here * here;
         ++row.nodes;
     }
     return row;
@@ -65,10 +74,20 @@ RowSums rowSums(const GridNoiseField& f, int j) {
 } // namespace
 
 GridNoise gridNoise(const GridNoiseField& field) {
-    std::vector<RowSums> rows(static_cast<std::size_t>(field.ny > 0 ? field.ny : 0));
+    const std::size_t nx = static_cast<std::size_t>(field.nx > 0 ? field.nx : 0);
+    const std::size_t ny = static_cast<std::size_t>(field.ny > 0 ? field.ny : 0);
+    // Each node's vorticity once: the box means read it nine times.
+    std::vector<double> omega(nx * ny, 0.0);
 #pragma omp parallel for schedule(static)
     for (int j = 0; j < field.ny; ++j)
-        rows[static_cast<std::size_t>(j)] = rowSums(field, j);
+        for (int i = 0; i < field.nx; ++i)
+            if (hasNeighbours(field, i, j))
+                omega[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] =
+                    vorticity(field, i, j);
+    std::vector<RowSums> rows(ny);
+#pragma omp parallel for schedule(static)
+    for (int j = 0; j < field.ny; ++j)
+        rows[static_cast<std::size_t>(j)] = rowSums(field, omega, j);
     RowSums total;
     for (const RowSums& row : rows) { // row order: the same sum on any thread count
         total.deviation2 += row.deviation2;
